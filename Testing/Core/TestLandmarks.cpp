@@ -1,0 +1,119 @@
+#include "Landmarks.h"
+#include "MeshFile.h"
+#include "TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+using namespace cmp;
+using test::writeTempFile;
+
+namespace
+{
+
+void expectError(const Status& status, const std::string& fragment)
+{
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(status.message().find(fragment), std::string::npos) << "message: " << status.message();
+}
+
+} // namespace
+
+TEST(Landmarks, ReadsPinnedAndPlainLists)
+{
+  const TriangleMesh mesh = test::octahedron();
+  LandmarkList landmarks;
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("a.pinned", "lk 4\nlk 0\n# comment\n\nlk 5\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 4, 0, 5 }));
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("b.txt", "2\n3\n1\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 2, 3, 1 }));
+}
+
+TEST(Landmarks, ReadsVtsAndChecksPositions)
+{
+  const TriangleMesh mesh = test::octahedron();
+  LandmarkList landmarks;
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("a.vts", "  4  0 0 1\n 1 -1 0 0\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 4, 1 }));
+  expectError(readLandmarkFile(writeTempFile("b.vts", "4 0 0 1\n1 0.5 0 0\n"), mesh, {}, landmarks),
+    "b.vts:2: landmark 1: vertex 1 is at (-1, 0, 0) but the file says (0.5, 0, 0)");
+  expectError(readLandmarkFile(writeTempFile("c.vts", "4 0 0\n"), mesh, {}, landmarks), "expected 'vertex_id x y z'");
+}
+
+TEST(Landmarks, SnapsCsvPositionsToNearestVertex)
+{
+  const TriangleMesh mesh = test::sphere(3);
+  LandmarkList landmarks;
+  ASSERT_TRUE(
+    readLandmarkFile(writeTempFile("a.csv", "x,y,z\n0.99,0.01,0\n0, -0.02, 1.01\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 0, 4 }));
+  expectError(readLandmarkFile(writeTempFile("b.csv", "5,5,5\n"), mesh, {}, landmarks), "wrong coordinate frame?");
+  expectError(readLandmarkFile(writeTempFile("c.csv", "1,0,0\n1,0.001,0\n"), mesh, {}, landmarks),
+    "duplicate landmark: features 0 and 1 are both on vertex 0");
+}
+
+TEST(Landmarks, MapsFileIdsThroughWelding)
+{
+  const TriangleMesh mesh = test::octahedron();
+  LandmarkList landmarks;
+  const std::vector<int> fileToMesh = { 0, 1, 2, 3, 4, 5, 0, 4 };
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("w.pinned", "lk 7\nlk 2\n"), mesh, fileToMesh, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 4, 2 }));
+  expectError(readLandmarkFile(writeTempFile("x.pinned", "lk 8\n"), mesh, fileToMesh, landmarks),
+    "x.pinned:1: landmark vertex id 8 is out of range (the mesh has 8 points)");
+}
+
+TEST(Landmarks, ReportsBadFiles)
+{
+  const TriangleMesh mesh = test::octahedron();
+  LandmarkList landmarks;
+  expectError(readLandmarkFile(writeTempFile("d.pinned", "lk 1\nlk 1\n"), mesh, {}, landmarks),
+    "duplicate landmark: features 0 and 1 are both on vertex 1");
+  expectError(readLandmarkFile(writeTempFile("e.pinned", "lk 1\nlk 6\n"), mesh, {}, landmarks),
+    "e.pinned:2: landmark vertex id 6 is out of range");
+  expectError(readLandmarkFile(writeTempFile("f.pinned", "lk one\n"), mesh, {}, landmarks),
+    "f.pinned:1: expected a vertex id, found 'lk one'");
+  expectError(readLandmarkFile(writeTempFile("g.pinned", "# nothing\n"), mesh, {}, landmarks), "no landmarks");
+  expectError(readLandmarkFile("/nonexistent.vts", mesh, {}, landmarks), "cannot open '/nonexistent.vts'");
+}
+
+TEST(Landmarks, ValidatesCountAndRange)
+{
+  expectError(validateLandmarks({ 0, 1, 2 }, 6, 4), "3 landmarks but 4 are expected");
+  expectError(validateLandmarks({ 0, 9 }, 6), "landmark 1 is vertex 9, which is out of range");
+  EXPECT_TRUE(validateLandmarks({ 5, 0, 3 }, 6, 3).ok());
+}
+
+TEST(Landmarks, FeatureIdArrayRoundTripsAndIsValidated)
+{
+  const LandmarkList landmarks = { 5, 0, 3 };
+  const std::vector<int> ids = featureIdsOf(landmarks, 6);
+  EXPECT_EQ(ids, (std::vector<int>{ 1, -1, -1, 2, -1, 0 }));
+  LandmarkList back;
+  ASSERT_TRUE(landmarksFromFeatureIds(ids, back).ok());
+  EXPECT_EQ(back, landmarks);
+  expectError(landmarksFromFeatureIds({ 0, -1, 2, -1 }, back), "missing landmark: feature 1 is on no vertex");
+  expectError(landmarksFromFeatureIds({ 0, 1, 1, -1 }, back), "feature 1 is on vertices 1 and 2");
+  expectError(landmarksFromFeatureIds({ -1, -1 }, back), "no landmarks");
+  expectError(landmarksFromFeatureIds({ -3, 0 }, back), "FeatureId -3 at vertex 0 is invalid");
+}
+
+TEST(Landmarks, RealLandmarkFilesMatchTheirMeshes)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  for (const std::string& model : test::landmarkedFourLeggedModels())
+  {
+    MeshFileData data;
+    ASSERT_TRUE(readOFF(model + ".off", data).ok());
+    LandmarkList landmarks;
+    const Status s = readLandmarkFile(model + ".vts", data.mesh, data.fileToMeshPoint, landmarks);
+    EXPECT_TRUE(s.ok()) << s.message();
+    EXPECT_EQ(landmarks.size(), 21u) << model;
+  }
+  MeshFileData spot;
+  ASSERT_TRUE(readOBJ(test::sharedDataDir() + "/spot/spot.obj", spot).ok());
+  LandmarkList landmarks;
+  ASSERT_TRUE(
+    readLandmarkFile(test::sharedDataDir() + "/spot/spot_shrec07.pinned", spot.mesh, spot.fileToMeshPoint, landmarks)
+      .ok());
+  EXPECT_EQ(landmarks.size(), 21u);
+}

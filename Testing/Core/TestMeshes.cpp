@@ -1,0 +1,108 @@
+#include "TestMeshes.h"
+
+#include "Subdivision.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+namespace cmp::test
+{
+
+TriangleMesh octahedron()
+{
+  TriangleMesh mesh;
+  mesh.points = { Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1) };
+  mesh.triangles = { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 },
+    { 0, 3, 5 } };
+  return mesh;
+}
+
+TriangleMesh tetrahedron(const Vec3& offset)
+{
+  TriangleMesh mesh;
+  mesh.points = { Vec3(0, 0, 0) + offset, Vec3(1, 0, 0) + offset, Vec3(0, 1, 0) + offset, Vec3(0, 0, 1) + offset };
+  mesh.triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } };
+  return mesh;
+}
+
+TriangleMesh sphere(int levels)
+{
+  TriangleMesh mesh = subdivideMidpoint(octahedron(), levels);
+  for (Vec3& p : mesh.points)
+    p.normalize();
+  return mesh;
+}
+
+TriangleMesh torus(int n, int m)
+{
+  TriangleMesh mesh;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
+      mesh.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
+                d = i * m + (j + 1) % m;
+      mesh.triangles.push_back({ a, b, c });
+      mesh.triangles.push_back({ a, c, d });
+    }
+  }
+  return mesh;
+}
+
+TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b)
+{
+  TriangleMesh mesh = a;
+  for (const Vec3& p : b.points)
+    mesh.points.push_back(p);
+  for (Triangle tri : b.triangles)
+  {
+    for (int& v : tri)
+      v += a.vertexCount();
+    mesh.triangles.push_back(tri);
+  }
+  return mesh;
+}
+
+std::string sharedDataDir()
+{
+  return CMP_SHARED_DATA_DIR;
+}
+
+std::string writeTempFile(const std::string& name, const std::string& text)
+{
+  const char* tmp = std::getenv("TMPDIR");
+  const std::string path =
+    std::string(tmp ? tmp : "/tmp") + "/cmp_test_" + std::to_string(::getpid()) + "_" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+std::vector<std::string> landmarkedFourLeggedModels()
+{
+  std::vector<std::string> models;
+  const std::filesystem::path folder = std::filesystem::path(sharedDataDir()) / "shrec07-fourleg";
+  if (sharedDataDir().empty() || !std::filesystem::is_directory(folder))
+    return models;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+  {
+    std::filesystem::path stem = entry.path();
+    if (stem.extension() == ".vts" && std::filesystem::exists(stem.replace_extension(".off")))
+      models.push_back(stem.replace_extension("").string());
+  }
+  std::sort(models.begin(), models.end());
+  return models;
+}
+
+} // namespace cmp::test
