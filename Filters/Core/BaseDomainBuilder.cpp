@@ -47,16 +47,24 @@ public:
   int triangleCount() const { return static_cast<int>(triangles_.size()); }
   bool alive(int t) const { return alive_[t] != 0; }
 
-  /// Sorted neighbours of `v`.
-  std::vector<int> neighbours(int v) const
+  /// Sorted neighbours of `v`, written into `result` (reused, so the hot
+  /// loop does not allocate).
+  void neighbours(int v, std::vector<int>& result) const
   {
-    std::vector<int> result;
+    result.clear();
     for (int t : incident_[v])
       for (int w : triangles_[t])
         if (w != v)
           result.push_back(w);
     std::sort(result.begin(), result.end());
     result.erase(std::unique(result.begin(), result.end()), result.end());
+  }
+
+  /// Sorted neighbours of `v`.
+  std::vector<int> neighbours(int v) const
+  {
+    std::vector<int> result;
+    neighbours(v, result);
     return result;
   }
 
@@ -64,11 +72,21 @@ public:
   /// two neighbours opposite their edge (the link condition).
   bool linkConditionHolds(int u, int v) const
   {
-    const std::vector<int> nu = neighbours(u);
-    const std::vector<int> nv = neighbours(v);
-    std::vector<int> common;
-    std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
-    return common.size() == 2;
+    neighbours(u, scratchU_);
+    neighbours(v, scratchV_);
+    int common = 0;
+    for (auto a = scratchU_.begin(), b = scratchV_.begin(); a != scratchU_.end() && b != scratchV_.end();)
+    {
+      if (*a < *b)
+        ++a;
+      else if (*b < *a)
+        ++b;
+      else
+      {
+        ++common, ++a, ++b;
+      }
+    }
+    return common == 2;
   }
 
   /// Moves u onto v: the two triangles on edge uv die, the others of u are
@@ -149,6 +167,7 @@ private:
   std::vector<Triangle> triangles_;
   std::vector<char> alive_;
   std::vector<std::vector<int>> incident_;
+  mutable std::vector<int> scratchU_, scratchV_;
 };
 
 /// Sum of squared distances to a set of planes, as a symmetric 4x4 matrix.
@@ -238,7 +257,8 @@ private:
   Candidate evaluate(int u) const
   {
     Candidate best;
-    for (int v : mesh_.neighbours(u))
+    mesh_.neighbours(u, candidates_);
+    for (int v : candidates_)
     {
       if (!mesh_.linkConditionHolds(u, v))
         continue;
@@ -354,6 +374,7 @@ private:
   double diagonal_;
   int remaining_ = 0;
   bool allowFolding_ = false;
+  mutable std::vector<int> candidates_;
   std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> queue_;
 };
 

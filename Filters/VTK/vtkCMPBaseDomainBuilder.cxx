@@ -1,0 +1,49 @@
+#include "vtkCMPBaseDomainBuilder.h"
+
+#include "BaseDomainBuilder.h"
+#include "vtkCMPPolyDataBridge.h"
+
+#include <vtkFieldData.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(vtkCMPBaseDomainBuilder);
+
+int vtkCMPBaseDomainBuilder::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  cmp::TriangleMesh mesh;
+  cmp::LandmarkList landmarks;
+  cmp::Status status = cmp::bridge::toCheckedSurface(input, mesh);
+  if (status.ok())
+    status = cmp::bridge::readLandmarks(input, landmarks);
+  cmp::BaseDomain domain;
+  cmp::BaseDomainBuilderReport report;
+  if (status.ok())
+  {
+    cmp::BaseDomainBuilderOptions options;
+    options.shapeWeight = this->ShapeWeight;
+    options.progress = [this](double fraction) { this->UpdateProgress(fraction); };
+    status = cmp::buildBaseDomain(mesh, landmarks, domain, options, &report);
+  }
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< status.message());
+    return 0;
+  }
+  output->ShallowCopy(cmp::bridge::toPolyData(domain));
+  vtkFieldData* field = output->GetFieldData();
+  cmp::bridge::setFieldValue(field, "MinimumAngle", report.minAngleDegrees);
+  cmp::bridge::setFieldValue(field, "MeanShapeQuality", report.meanShapeQuality);
+  cmp::bridge::setFieldValue(field, "FoldingCollapses", report.foldingCollapses);
+  return 1;
+}
+
+void vtkCMPBaseDomainBuilder::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ShapeWeight: " << this->ShapeWeight << "\n";
+}

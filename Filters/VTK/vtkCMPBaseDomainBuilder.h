@@ -1,0 +1,45 @@
+#pragma once
+/// \file vtkCMPBaseDomainBuilder.h
+/// \brief Makes the base domain `L0` from one landmarked surface.
+
+#include "CMPFiltersModule.h"
+
+#include <vtkPolyDataAlgorithm.h>
+
+/// \brief Builds the base domain `L0` by decimating a landmarked surface
+///        until only its landmarks remain.
+///
+/// Input: a closed genus-0 triangle surface with point array `FeatureId`
+/// (at least 4 landmarks). Output: `L0` as a `vtkPolyData` with one point per
+/// landmark (point f is feature f, at the landmark's position, so `L0`
+/// renders as a low-poly version of the surface), its triangles (2F-4 of
+/// them), point array `FeatureId` and field arrays `MinimumAngle` (degrees),
+/// `MeanShapeQuality` (1 = all equilateral) and `FoldingCollapses`.
+/// Every step is a topology-preserving half-edge collapse, so the result is
+/// always a valid genus-0 triangulation laid out like the surface.
+class CMPFILTERS_EXPORT vtkCMPBaseDomainBuilder : public vtkPolyDataAlgorithm
+{
+public:
+  /// \brief Standard VTK factory.
+  static vtkCMPBaseDomainBuilder* New();
+  vtkTypeMacro(vtkCMPBaseDomainBuilder, vtkPolyDataAlgorithm);
+  /// \brief Prints the properties.
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// \brief Weight of triangle shape against closeness to the surface when
+  ///        choosing collapses (default 1). Higher favours rounder triangles.
+  vtkSetClampMacro(ShapeWeight, double, 0.0, 100.0);
+  /// \brief Weight of triangle shape against closeness to the surface.
+  vtkGetMacro(ShapeWeight, double);
+
+protected:
+  vtkCMPBaseDomainBuilder() = default;
+  ~vtkCMPBaseDomainBuilder() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkCMPBaseDomainBuilder(const vtkCMPBaseDomainBuilder&) = delete;
+  void operator=(const vtkCMPBaseDomainBuilder&) = delete;
+
+  double ShapeWeight = 1.0;
+};

@@ -1,0 +1,54 @@
+#pragma once
+/// \file vtkCMPPolyDataBridge.h
+/// \brief Conversions between vtkPolyData and the core's types, shared by
+///        all filters of the module (private header, not wrapped).
+
+#include "BaseDomain.h"
+#include "Landmarks.h"
+#include "Status.h"
+#include "TriangleMesh.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+class vtkDataSet;
+class vtkFieldData;
+
+namespace cmp::bridge
+{
+
+/// \brief Name of the point array that marks landmark vertices (-1 or 0..F-1).
+constexpr const char* kFeatureIdArray = "FeatureId";
+/// \brief Name of the field array mapping a file's point ids to welded ids.
+constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
+/// \brief Name of the cell array of per-corner texture coordinates (6 values).
+constexpr const char* kCornerTCoordsArray = "CornerTCoords";
+
+/// \brief Copies points and triangles; fails, naming the cell, if `input`
+///        has cells that are not triangles (vertices, lines, polygons, strips).
+Status toTriangleMesh(vtkPolyData* input, TriangleMesh& mesh);
+
+/// \brief Converts and runs `checkSurface()`, so a filter can reject bad
+///        input with one call.
+Status toCheckedSurface(vtkPolyData* input, TriangleMesh& mesh);
+
+/// \brief Reads the `FeatureId` point array (any integer type) as landmarks.
+Status readLandmarks(vtkPolyData* input, LandmarkList& landmarks);
+
+/// \brief Reads a base domain polydata (points, triangles, `FeatureId`) and
+///        checks it, and that it has `landmarkCount` vertices when >= 0.
+Status toBaseDomain(vtkPolyData* input, BaseDomain& domain, int landmarkCount = -1);
+
+/// \brief Builds a polydata of points and triangles.
+vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);
+
+/// \brief Builds the base domain polydata with its `FeatureId` point array.
+vtkSmartPointer<vtkPolyData> toPolyData(const BaseDomain& domain);
+
+/// \brief Adds (or replaces) a one-value double array in field data.
+void setFieldValue(vtkFieldData* fieldData, const char* name, double value);
+
+/// \brief Adds (or replaces) a one-value string array in field data.
+void setFieldString(vtkFieldData* fieldData, const char* name, const std::string& value);
+
+} // namespace cmp::bridge

@@ -1,0 +1,225 @@
+#include "vtkCMPSurfaceReader.h"
+
+#include "MeshFile.h"
+#include "vtkCMPPolyDataBridge.h"
+
+#include <vtkAbstractPolyDataReader.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSTLReader.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <filesystem>
+
+vtkStandardNewMacro(vtkCMPSurfaceReader);
+
+namespace
+{
+
+/// Collects the error messages a VTK reader emits instead of letting them
+/// reach the output window, so they can be reported as ours.
+class ErrorCollector
+{
+public:
+  explicit ErrorCollector(vtkObject* watched)
+  {
+    callback_->SetClientData(&message_);
+    callback_->SetCallback(
+      [](vtkObject*, unsigned long, void* clientData, void* callData)
+      {
+        auto* message = static_cast<std::string*>(clientData);
+        if (message->empty() && callData)
+          *message = static_cast<const char*>(callData);
+      });
+    watched->AddObserver(vtkCommand::ErrorEvent, callback_);
+  }
+  const std::string& message() const { return message_; }
+
+private:
+  std::string message_;
+  vtkNew<vtkCallbackCommand> callback_;
+};
+
+/// Reads PLY, STL or VTP with VTK's readers and triangulates polygons.
+cmp::Status readWithVTK(const std::string& path, const std::string& extension, vtkSmartPointer<vtkPolyData>& result)
+{
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == "ply")
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(path.c_str());
+    reader = ply;
+  }
+  else if (extension == "stl")
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(path.c_str());
+    stl->MergingOff(); // welding is done exactly, below, for every format
+    reader = stl;
+  }
+  else
+  {
+    auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    xml->SetFileName(path.c_str());
+    reader = xml;
+  }
+  ErrorCollector errors(reader);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(reader->GetOutputPort());
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  ErrorCollector triangulateErrors(triangulate);
+  triangulate->Update();
+  result = triangulate->GetOutput();
+  if (!errors.message().empty() || result->GetNumberOfPoints() == 0)
+  {
+    std::string detail = errors.message();
+    const std::size_t newline = detail.find_last_of('\n', detail.size() > 1 ? detail.size() - 2 : 0);
+    detail = newline == std::string::npos ? detail : detail.substr(newline + 1);
+    return cmp::Status::error("cannot read '" + path + "' as " + extension + (detail.empty() ? "" : ": " + detail));
+  }
+  return {};
+}
+
+/// Copies the point data of the first file point that became each surface point.
+void copyWeldedPointData(vtkPointData* source, const std::vector<int>& fileToMeshPoint, vtkPolyData* output)
+{
+  const vtkIdType count = output->GetNumberOfPoints();
+  std::vector<vtkIdType> firstFilePoint(count, -1);
+  for (std::size_t i = 0; i < fileToMeshPoint.size(); ++i)
+    if (firstFilePoint[fileToMeshPoint[i]] < 0)
+      firstFilePoint[fileToMeshPoint[i]] = static_cast<vtkIdType>(i);
+  vtkPointData* target = output->GetPointData();
+  target->CopyAllocate(source, count);
+  for (vtkIdType p = 0; p < count; ++p)
+    target->CopyData(source, firstFilePoint[p], p);
+}
+
+void addTextureCoordinates(const cmp::MeshFileData& data, vtkPolyData* output)
+{
+  const auto& corners = data.cornerTexCoords;
+  auto cornerArray = vtkSmartPointer<vtkFloatArray>::New();
+  cornerArray->SetName(cmp::bridge::kCornerTCoordsArray);
+  cornerArray->SetNumberOfComponents(6);
+  cornerArray->SetNumberOfTuples(static_cast<vtkIdType>(corners.size()));
+  // Point texture coordinates are only meaningful if no point sits on a seam.
+  std::vector<Eigen::Vector2d> pointTex(data.mesh.vertexCount(), Eigen::Vector2d::Constant(NAN));
+  bool seamless = true;
+  for (std::size_t t = 0; t < corners.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      cornerArray->SetComponent(static_cast<vtkIdType>(t), 2 * k, corners[t][k].x());
+      cornerArray->SetComponent(static_cast<vtkIdType>(t), 2 * k + 1, corners[t][k].y());
+      Eigen::Vector2d& known = pointTex[data.mesh.triangles[t][k]];
+      if (std::isnan(known.x()))
+        known = corners[t][k];
+      else if (known != corners[t][k])
+        seamless = false;
+    }
+  }
+  output->GetCellData()->AddArray(cornerArray);
+  if (!seamless)
+    return;
+  auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(data.mesh.vertexCount());
+  for (int v = 0; v < data.mesh.vertexCount(); ++v)
+    tcoords->SetTuple2(v, pointTex[v].x(), pointTex[v].y());
+  output->GetPointData()->SetTCoords(tcoords);
+}
+
+} // namespace
+
+vtkCMPSurfaceReader::vtkCMPSurfaceReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+bool vtkCMPSurfaceReader::CanReadExtension(const char* fileName)
+{
+  const std::string ext = cmp::fileExtension(fileName ? fileName : "");
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl" || ext == "vtp";
+}
+
+int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (this->FileName.empty())
+  {
+    vtkErrorMacro("no file name set");
+    return 0;
+  }
+  if (!CanReadExtension(this->FileName.c_str()))
+  {
+    vtkErrorMacro("cannot read '" << this->FileName << "': unknown extension (use .off, .obj, .ply, .stl or .vtp)");
+    return 0;
+  }
+  if (!std::filesystem::is_regular_file(this->FileName))
+  {
+    vtkErrorMacro("cannot open '" << this->FileName << "': no such file");
+    return 0;
+  }
+  const std::string ext = cmp::fileExtension(this->FileName);
+  cmp::MeshFileData data;
+  vtkSmartPointer<vtkPolyData> fromVTK;
+  cmp::Status status;
+  if (ext == "off")
+    status = cmp::readOFF(this->FileName, data);
+  else if (ext == "obj")
+    status = cmp::readOBJ(this->FileName, data);
+  else
+  {
+    status = readWithVTK(this->FileName, ext, fromVTK);
+    if (status.ok())
+    {
+      status = cmp::bridge::toTriangleMesh(fromVTK, data.mesh);
+      data.fileToMeshPoint.resize(data.mesh.vertexCount());
+      for (int i = 0; i < data.mesh.vertexCount(); ++i)
+        data.fileToMeshPoint[i] = i;
+    }
+  }
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< status.message());
+    return 0;
+  }
+  this->UpdateProgress(0.5);
+  const int welded = cmp::weldIdenticalPoints(data);
+  vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(data.mesh);
+  if (fromVTK)
+  {
+    copyWeldedPointData(fromVTK->GetPointData(), data.fileToMeshPoint, surface);
+    surface->GetCellData()->ShallowCopy(fromVTK->GetCellData());
+  }
+  if (!data.cornerTexCoords.empty())
+    addTextureCoordinates(data, surface);
+  if (welded > 0)
+  {
+    auto map = vtkSmartPointer<vtkIdTypeArray>::New();
+    map->SetName(cmp::bridge::kFileToMeshPointArray);
+    map->SetNumberOfValues(static_cast<vtkIdType>(data.fileToMeshPoint.size()));
+    for (std::size_t i = 0; i < data.fileToMeshPoint.size(); ++i)
+      map->SetValue(static_cast<vtkIdType>(i), data.fileToMeshPoint[i]);
+    surface->GetFieldData()->AddArray(map);
+  }
+  cmp::bridge::setFieldValue(surface->GetFieldData(), "WeldedPointCount", welded);
+  output->ShallowCopy(surface);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkCMPSurfaceReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+}
