@@ -1,0 +1,82 @@
+#include "FilterTestUtilities.h"
+
+#include "vtkCMPLandmarksFromFile.h"
+#include "vtkCMPSurfaceReader.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
+#include <vtkPolyData.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace cmp::test
+{
+
+RunResult run(vtkAlgorithm* algorithm)
+{
+  RunResult result;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetClientData(&result.error);
+  callback->SetCallback(
+    [](vtkObject*, unsigned long, void* clientData, void* callData)
+    {
+      auto* error = static_cast<std::string*>(clientData);
+      if (error->empty() && callData)
+        *error = static_cast<const char*>(callData);
+    });
+  const unsigned long tag = algorithm->AddObserver(vtkCommand::ErrorEvent, callback);
+  const bool ok = algorithm->GetExecutive()->Update() != 0;
+  algorithm->RemoveObserver(tag);
+  result.succeeded = ok && result.error.empty();
+  return result;
+}
+
+std::string sharedDataDir()
+{
+  return CMP_SHARED_DATA_DIR;
+}
+
+std::string tempPath(const std::string& name)
+{
+  const std::filesystem::path dir =
+    std::filesystem::temp_directory_path() / ("cmp_filter_tests_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+std::string writeTempFile(const std::string& name, const std::string& text)
+{
+  const std::string path = tempPath(name);
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+std::string octahedronOFF(bool open)
+{
+  std::string text = "OFF\n6 " + std::string(open ? "7" : "8") +
+    " 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+    "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n";
+  if (!open)
+    text += "3 0 3 5\n";
+  return text;
+}
+
+vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::string& landmarks)
+{
+  vtkNew<vtkCMPSurfaceReader> reader;
+  reader->SetFileName(mesh.c_str());
+  vtkNew<vtkCMPLandmarksFromFile> assign;
+  assign->SetInputConnection(reader->GetOutputPort());
+  assign->SetLandmarkFile(landmarks.c_str());
+  const RunResult result = run(assign);
+  EXPECT_TRUE(result.succeeded) << result.error;
+  return assign->GetOutput();
+}
+
+} // namespace cmp::test

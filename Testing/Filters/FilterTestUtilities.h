@@ -1,0 +1,48 @@
+#pragma once
+/// \file FilterTestUtilities.h
+/// \brief Helpers for the VTK filter tests: running an algorithm while
+///        capturing its error message, writing small surfaces to files.
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkAlgorithm;
+class vtkPolyData;
+
+namespace cmp::test
+{
+
+/// \brief Outcome of running one algorithm.
+struct RunResult
+{
+  bool succeeded = false; ///< Update() returned true and no error was reported.
+  std::string error;      ///< First error message the algorithm reported.
+};
+
+/// \brief Updates `algorithm`, capturing its ErrorEvent instead of printing it.
+RunResult run(vtkAlgorithm* algorithm);
+
+/// \brief The shared data folder ("" when not configured).
+std::string sharedDataDir();
+
+/// \brief A path in a fresh per-process temp folder.
+std::string tempPath(const std::string& name);
+
+/// \brief Writes `text` to tempPath(name) and returns the path.
+std::string writeTempFile(const std::string& name, const std::string& text);
+
+/// \brief OFF text of a regular octahedron, optionally without its last triangle.
+std::string octahedronOFF(bool open = false);
+
+/// \brief Reads a surface with vtkCMPSurfaceReader and adds landmarks from a file.
+vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::string& landmarks);
+
+} // namespace cmp::test
+
+#define CMP_REQUIRE_SHARED_DATA()                                                                                     \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    if (cmp::test::sharedDataDir().empty())                                                                           \
+      GTEST_SKIP() << "CMP_SHARED_DATA_DIR is not set";                                                               \
+  } while (0)

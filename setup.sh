@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this project needs (once; later runs only
+# check), then configures and builds it in ./build.
+# Usage: ./setup.sh            (set CMP_BUILD_DIR to build elsewhere)
+set -euo pipefail
+cd "$(dirname "$0")"
+
+# ParaView 5.11 (with its own VTK 9.2) and what find_package(ParaView) needs.
+# Never add libvtk9-dev: it conflicts with python3-paraview.
+packages=(
+  cmake g++ ninja-build pkg-config
+  paraview-dev python3-paraview python3-mpi4py python3-numpy
+  libeigen3-dev libgtest-dev xvfb
+  qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libqt5opengl5-dev
+  libopenmpi-dev libutfcpp-dev libboost-dev libexpat1-dev libfreetype-dev libgdal-dev
+  libgl2ps-dev libglew-dev libhdf5-mpi-dev libjpeg-dev liblz4-dev liblzma-dev libxml2-dev
+  libnetcdf-dev libpng-dev libpython3-dev libtheora-dev libtiff-dev libx11-dev libgl-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libdouble-conversion-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+build_dir="${CMP_BUILD_DIR:-build}"
+# /usr/bin/python3 sees Debian's ParaView modules; a pyenv shim on PATH does not.
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3
+cmake --build "$build_dir"
+echo "setup: built in $build_dir"
