@@ -23,7 +23,7 @@ int vtkCMPLandmarksFromFile::RequestData(
     return 0;
   }
   cmp::TriangleMesh mesh;
-  if (cmp::Status s = cmp::bridge::toTriangleMesh(input, mesh); !s.ok())
+  if (cmp::Status s = cmp::bridge::toCheckedSurface(input, mesh); !s.ok())
   {
     vtkErrorMacro(<< s.message());
     return 0;

@@ -1,6 +1,7 @@
 #include "FilterTestUtilities.h"
 #include "vtkCMPBaseDomainBuilder.h"
 #include "vtkCMPInputCheck.h"
+#include "vtkCMPSurfaceReader.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -87,9 +88,16 @@ TEST(BaseDomainBuilderFilter, ReportsBadInput)
   result = run(builder);
   EXPECT_NE(result.error.find("missing point array 'FeatureId'"), std::string::npos) << result.error;
 
-  vtkSmartPointer<vtkPolyData> open = readLandmarked(writeTempFile("open.off", octahedronOFF(true)),
-    writeTempFile("open.txt", "0\n1\n2\n3\n"));
-  builder->SetInputData(open);
+  // Landmarks From File refuses an open surface, so label it directly.
+  vtkNew<vtkCMPSurfaceReader> reader;
+  reader->SetFileName(writeTempFile("open.off", octahedronOFF(true)).c_str());
+  ASSERT_TRUE(run(reader).succeeded);
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("FeatureId");
+  for (int id : { 0, 1, 2, 3, -1, -1 })
+    ids->InsertNextValue(id);
+  reader->GetOutput()->GetPointData()->AddArray(ids);
+  builder->SetInputData(reader->GetOutput());
   result = run(builder);
   EXPECT_NE(result.error.find("open surface"), std::string::npos) << result.error;
 }

@@ -187,3 +187,13 @@ TEST(LandmarksFromFile, ReportsBadLandmarkFiles)
   assign->SetLandmarkFile("");
   EXPECT_NE(run(assign).error.find("no landmark file set"), std::string::npos);
 }
+
+TEST(LandmarksFromFile, ChecksTheSurfaceFirst)
+{
+  vtkSmartPointer<vtkPolyData> open = readSurface(writeTempFile("lm-open.off", octahedronOFF(true)));
+  vtkNew<vtkCMPLandmarksFromFile> assign;
+  assign->SetInputData(open);
+  assign->SetLandmarkFile(writeTempFile("lm-open.txt", "0\n1\n").c_str());
+  const RunResult result = run(assign);
+  EXPECT_NE(result.error.find("open surface: 3 boundary edges"), std::string::npos) << result.error;
+}
