@@ -1,0 +1,267 @@
+/// \file cmp_benchmark.cpp
+/// \brief Times each pipeline stage of the core on every landmarked model of
+///        the shared data and on a surface of at least a million triangles,
+///        with peak memory, and writes the results as Markdown and CSV.
+
+#include "BenchmarkModels.h"
+#include "BenchmarkReport.h"
+#include "BenchmarkRunner.h"
+#include "BenchmarkStages.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#ifndef CMP_SHARED_DATA_DIR
+#define CMP_SHARED_DATA_DIR ""
+#endif
+
+namespace
+{
+
+using namespace cmp::bench;
+
+/// \brief Command-line settings.
+struct Options
+{
+  std::string dataDir = CMP_SHARED_DATA_DIR;
+  std::string output = "benchmark-results.md";
+  int repetitions = 3;
+  int largeRepetitions = 1;
+  long minTriangles = 1000000;
+  bool large = true;
+  bool listOnly = false;
+  std::vector<std::string> only; ///< Model names to run; empty = all.
+};
+
+const char* const usage =
+  R"(usage: cmp_benchmark [options]
+
+Times each stage of the core pipeline on every landmarked model of the shared
+data folder and on one model midpoint-subdivided to >= --min-triangles, each
+model in its own process, and writes a Markdown table (plus a CSV beside it).
+
+  --data DIR            shared data folder (default: the configured CMP_SHARED_DATA_DIR)
+  --output FILE         Markdown file to write (default: benchmark-results.md);
+                        the CSV goes to the same path with extension .csv
+  --repeat N            runs per stage, the best counts (default: 3)
+  --large-repeat N      runs per stage on the large model (default: 1)
+  --min-triangles N     triangle count of the large model (default: 1000000)
+  --no-large            skip the large model
+  --only NAME[,NAME]    run only these models ("381", "spot", "large" or its full name)
+  --list                print the models and exit
+  --help                print this
+)";
+
+std::vector<std::string> splitCommas(const std::string& text)
+{
+  std::vector<std::string> parts;
+  std::istringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ','))
+  {
+    if (!part.empty())
+      parts.push_back(part);
+  }
+  return parts;
+}
+
+/// \brief Parses a positive integer option value; false if it is not one.
+bool parseCount(const std::string& text, long& value)
+{
+  char* end = nullptr;
+  value = std::strtol(text.c_str(), &end, 10);
+  return !text.empty() && *end == '\0' && value > 0;
+}
+
+/// \brief Fills `options`; returns an exit code, or -1 to go on.
+int parseArguments(int argc, char** argv, Options& options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    long count = 0;
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << usage;
+      return 0;
+    }
+    else if (arg == "--no-large")
+      options.large = false;
+    else if (arg == "--list")
+      options.listOnly = true;
+    else if (arg == "--data" && hasValue)
+      options.dataDir = argv[++i];
+    else if (arg == "--output" && hasValue)
+      options.output = argv[++i];
+    else if (arg == "--only" && hasValue)
+      options.only = splitCommas(argv[++i]);
+    else if (arg == "--repeat" && hasValue && parseCount(argv[++i], count))
+      options.repetitions = static_cast<int>(count);
+    else if (arg == "--large-repeat" && hasValue && parseCount(argv[++i], count))
+      options.largeRepetitions = static_cast<int>(count);
+    else if (arg == "--min-triangles" && hasValue && parseCount(argv[++i], count))
+      options.minTriangles = count;
+    else
+    {
+      std::cerr << "cmp_benchmark: bad or incomplete option '" << arg << "'\n\n" << usage;
+      return 2;
+    }
+  }
+  return -1;
+}
+
+bool contains(const std::vector<std::string>& names, const std::string& name)
+{
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool selected(const Options& options, const std::string& name)
+{
+  return options.only.empty() || contains(options.only, name);
+}
+
+/// \brief Whether the large model may be wanted: by default, or if `--only`
+///        names "large" or something that is not a base model.
+bool largeWanted(const Options& options, const std::vector<ModelSpec>& models)
+{
+  if (!options.large)
+    return false;
+  return options.only.empty() || std::any_of(options.only.begin(), options.only.end(), [&](const std::string& name) {
+    return std::none_of(models.begin(), models.end(), [&](const ModelSpec& m) { return m.name == name; });
+  });
+}
+
+/// \brief Runs one model, reporting progress on stderr.
+ModelResult runAndReport(const ModelSpec& spec, const std::vector<Stage>& stages, int repetitions)
+{
+  std::cerr << "cmp_benchmark: " << spec.name << " (" << spec.meshPath
+            << (spec.subdivisionLevels ? ", " + std::to_string(spec.subdivisionLevels) + " subdivisions" : "")
+            << ")\n";
+  return runModel(spec, stages, repetitions, [](const std::string& line) { std::cerr << "  " << line << "\n"; });
+}
+
+/// \brief Triangle count of `spec`'s file, from a result already measured or
+///        else by running only the `read` stage in a child process; 0 for a
+///        model that failed (its refinement would fail the same way).
+int triangleCount(const ModelSpec& spec, const std::vector<ModelResult>& results)
+{
+  for (const ModelResult& result : results)
+  {
+    if (result.model == spec.name)
+      return result.ok() ? result.triangles : 0;
+  }
+  std::vector<Stage> readOnly;
+  for (const Stage& stage : pipelineStages())
+  {
+    if (stage.name == "read")
+      readOnly.push_back(stage);
+  }
+  return runModel(spec, readOnly, 1).triangles;
+}
+
+std::optional<ModelSpec> largeModel(
+  const std::vector<ModelSpec>& models, const std::vector<ModelResult>& results, long minTriangles)
+{
+  std::vector<int> counts;
+  for (const ModelSpec& spec : models)
+    counts.push_back(triangleCount(spec, results));
+  return chooseLargeModel(models, counts, minTriangles);
+}
+
+std::string largeNote(const ModelSpec& large, const std::vector<ModelResult>& results, long minTriangles)
+{
+  for (const ModelResult& result : results)
+  {
+    if (result.model == large.name)
+      return "large model: " + large.name + " = " + large.meshPath + " midpoint-subdivided " +
+        std::to_string(large.subdivisionLevels) + " times, " + std::to_string(result.triangles) +
+        " triangles (fewest levels to reach " + std::to_string(minTriangles) + ")";
+  }
+  return "";
+}
+
+std::string csvPathFor(const std::string& markdownPath)
+{
+  std::filesystem::path path(markdownPath);
+  path.replace_extension(".csv");
+  return path.string() == markdownPath ? markdownPath + ".csv" : path.string();
+}
+
+void listModels(const std::vector<ModelSpec>& models, const std::optional<ModelSpec>& large)
+{
+  for (const ModelSpec& spec : models)
+    std::cout << spec.name << "\t" << spec.meshPath << "\t" << spec.landmarkPath << "\n";
+  if (large)
+    std::cout << large->name << "\t" << large->meshPath << " x" << large->subdivisionLevels << " subdivisions\t"
+              << large->landmarkPath << "\n";
+}
+
+/// \brief Writes and prints the report; returns the process exit code.
+int writeReport(const Options& options, const std::vector<ModelResult>& results, const RunInfo& info)
+{
+  const std::string markdown = markdownReport(results, info);
+  std::cout << markdown;
+  const std::string csvPath = csvPathFor(options.output);
+  if (!writeTextFile(options.output, markdown) || !writeTextFile(csvPath, csvReport(results)))
+  {
+    std::cerr << "cmp_benchmark: cannot write " << options.output << " or " << csvPath << "\n";
+    return 2;
+  }
+  std::cerr << "cmp_benchmark: wrote " << options.output << " and " << csvPath << "\n";
+  const bool ok = std::all_of(results.begin(), results.end(), [](const ModelResult& r) { return r.ok(); });
+  return ok ? 0 : 1;
+}
+
+int run(const Options& options)
+{
+  if (options.dataDir.empty() || !std::filesystem::is_directory(options.dataDir))
+  {
+    std::cerr << "cmp_benchmark: shared data folder '" << options.dataDir
+              << "' not found; pass --data DIR (or configure CMP_SHARED_DATA_DIR)\n";
+    return 2;
+  }
+  RunInfo info{ options.dataDir, options.repetitions, options.largeRepetitions, {} };
+  std::vector<std::string> skipped;
+  const std::vector<ModelSpec> models = discoverModels(options.dataDir, skipped);
+  for (const std::string& reason : skipped)
+    info.notes.push_back("not benchmarked: " + reason);
+
+  std::vector<ModelResult> results;
+  for (const ModelSpec& spec : models)
+  {
+    if (selected(options, spec.name) && !options.listOnly)
+      results.push_back(runAndReport(spec, pipelineStages(), options.repetitions));
+  }
+  const std::optional<ModelSpec> large =
+    largeWanted(options, models) ? largeModel(models, results, options.minTriangles) : std::nullopt;
+  if (options.listOnly)
+  {
+    listModels(models, large);
+    return 0;
+  }
+  if (large && (selected(options, large->name) || contains(options.only, "large")))
+  {
+    results.push_back(runAndReport(*large, pipelineStages(), options.largeRepetitions));
+    info.notes.push_back(largeNote(*large, results, options.minTriangles));
+  }
+  if (results.empty())
+  {
+    std::cerr << "cmp_benchmark: no model selected (see --list)\n";
+    return 2;
+  }
+  return writeReport(options, results, info);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options options;
+  const int code = parseArguments(argc, argv, options);
+  return code >= 0 ? code : run(options);
+}
