@@ -69,13 +69,15 @@ public:
   }
 
   /// Collapsing u into v keeps a closed manifold iff they share exactly the
-  /// two neighbours opposite their edge (the link condition).
-  bool linkConditionHolds(int u, int v) const
+  /// two neighbours opposite their edge (the link condition). `uNeighbours`
+  /// is `neighbours(u)`, computed once by the caller for all candidates v.
+  bool linkConditionHolds(const std::vector<int>& uNeighbours, int v) const
   {
-    neighbours(u, scratchU_);
-    neighbours(v, scratchV_);
+    neighbours(v, scratch_);
     int common = 0;
-    for (auto a = scratchU_.begin(), b = scratchV_.begin(); a != scratchU_.end() && b != scratchV_.end();)
+    auto a = uNeighbours.cbegin();
+    auto b = scratch_.cbegin();
+    while (a != uNeighbours.cend() && b != scratch_.cend())
     {
       if (*a < *b)
         ++a;
@@ -167,7 +169,7 @@ private:
   std::vector<Triangle> triangles_;
   std::vector<char> alive_;
   std::vector<std::vector<int>> incident_;
-  mutable std::vector<int> scratchU_, scratchV_;
+  mutable std::vector<int> scratch_;
 };
 
 /// Sum of squared distances to a set of planes, as a symmetric 4x4 matrix.
@@ -204,6 +206,7 @@ struct QueueEntry
   double cost;
   int vertex;
   int version;
+  Candidate candidate;
   bool operator>(const QueueEntry& other) const { return cost > other.cost; }
 };
 
@@ -238,12 +241,11 @@ public:
       }
       const QueueEntry entry = queue_.top();
       queue_.pop();
+      // Any change near a vertex bumps its version (see collapse()), so a
+      // current entry's candidate is still valid and still its best.
       if (entry.version != version_[entry.vertex])
         continue;
-      const Candidate candidate = evaluate(entry.vertex);
-      if (candidate.target < 0)
-        continue;
-      collapse(entry.vertex, candidate, report);
+      collapse(entry.vertex, entry.candidate, report);
       if (options_.progress && total > 0 && remaining_ % 1024 == 0)
         options_.progress(1.0 - static_cast<double>(remaining_) / total);
     }
@@ -260,7 +262,7 @@ private:
     mesh_.neighbours(u, candidates_);
     for (int v : candidates_)
     {
-      if (!mesh_.linkConditionHolds(u, v))
+      if (!mesh_.linkConditionHolds(candidates_, v))
         continue;
       Candidate c = cost(u, v);
       if (c.folds && !allowFolding_)
@@ -307,7 +309,7 @@ private:
       return;
     const Candidate c = evaluate(v);
     if (c.target >= 0)
-      queue_.push({ c.cost, v, version_[v] });
+      queue_.push({ c.cost, v, version_[v], c });
   }
 
   void collapse(int u, const Candidate& candidate, BaseDomainBuilderReport& report)
