@@ -24,6 +24,9 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 from . import CMPFilters as cmp
 
 
+EXIT_NO_BASE_DOMAIN = 3
+
+
 class StageError(Exception):
     """A pipeline stage failed on one model; the message says why."""
 
@@ -182,7 +185,10 @@ def parse_arguments(argv):
     if args.base_domain is None and args.base_domain_from is None:
         args.base_domain_from = 0
     if args.base_domain_from is not None and not 0 <= args.base_domain_from < len(args.mesh):
-        parser.error("--base-domain-from %d: there are only %d meshes" % (args.base_domain_from, len(args.mesh)))
+        parser.error("--base-domain-from %d: give the 0-based index of one of the %d meshes (0 to %d)"
+                     % (args.base_domain_from, len(args.mesh), len(args.mesh) - 1))
+    if os.path.exists(args.output) and not os.path.isdir(args.output):
+        parser.error("--output %s exists and is not a folder" % args.output)
     return args
 
 
@@ -191,7 +197,11 @@ def main(argv=None):
     # Errors are collected per model and reported once; the executive's
     # generic "returned failure" log lines would only repeat them.
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
-    os.makedirs(args.output, exist_ok=True)
+    try:
+        os.makedirs(args.output, exist_ok=True)
+    except OSError as error:
+        print("consistent-remesh: cannot create the output folder: %s" % error, file=sys.stderr)
+        return 2
     models = [Model(m, l) for m, l in zip(args.mesh, args.landmarks)]
     report = {"models": {}}
 
@@ -242,7 +252,7 @@ def main(argv=None):
 
     print_summary(models, report)
     if domain is None:
-        return 2
+        return EXIT_NO_BASE_DOMAIN
     return 1 if failed else 0
 
 

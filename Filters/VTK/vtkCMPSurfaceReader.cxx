@@ -17,7 +17,10 @@
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 
 vtkStandardNewMacro(vtkCMPSurfaceReader);
 
@@ -48,9 +51,33 @@ private:
   vtkNew<vtkCallbackCommand> callback_;
 };
 
+/// vtkSTLReader trusts a binary STL's triangle count and aborts the process
+/// when it cannot allocate that much, so check the count against the size.
+cmp::Status checkBinarySTLSize(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  char header[84] = {};
+  in.read(header, sizeof(header));
+  if (in.gcount() < 84 || std::string(header, 5) == "solid")
+    return {}; // ASCII (or too short to be binary): VTK's parser reports problems
+  std::uint32_t count = 0;
+  std::memcpy(&count, header + 80, sizeof(count));
+  const std::uintmax_t size = std::filesystem::file_size(path);
+  if (size != 84 + 50 * static_cast<std::uintmax_t>(count))
+    return cmp::Status::error("cannot read '" + path + "' as stl: the header announces " + std::to_string(count) +
+      " triangles (" + std::to_string(84 + 50 * static_cast<std::uintmax_t>(count)) + " bytes) but the file has " +
+      std::to_string(size) + " bytes");
+  return {};
+}
+
 /// Reads PLY, STL or VTP with VTK's readers and triangulates polygons.
 cmp::Status readWithVTK(const std::string& path, const std::string& extension, vtkSmartPointer<vtkPolyData>& result)
 {
+  if (extension == "stl")
+  {
+    if (cmp::Status s = checkBinarySTLSize(path); !s.ok())
+      return s;
+  }
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == "ply")
   {
@@ -81,8 +108,10 @@ cmp::Status readWithVTK(const std::string& path, const std::string& extension, v
   result = triangulate->GetOutput();
   if (!errors.message().empty() || result->GetNumberOfPoints() == 0)
   {
+    // VTK's message ends with the reader's own last line; keep only that.
     std::string detail = errors.message();
-    const std::size_t newline = detail.find_last_of('\n', detail.size() > 1 ? detail.size() - 2 : 0);
+    detail.erase(detail.find_last_not_of(" \t\r\n") + 1);
+    const std::size_t newline = detail.find_last_of('\n');
     detail = newline == std::string::npos ? detail : detail.substr(newline + 1);
     return cmp::Status::error("cannot read '" + path + "' as " + extension + (detail.empty() ? "" : ": " + detail));
   }

@@ -64,6 +64,15 @@ TEST(SurfaceReader, ReportsMissingGarbageAndUnknownFiles)
   EXPECT_NE(result.error.find("cannot read"), std::string::npos) << result.error;
   readSurface(writeTempFile("garbage.stl", std::string(10, '\x01')), &result);
   EXPECT_FALSE(result.succeeded);
+  // VTK's own reason is kept, not just "cannot read".
+  readSurface(writeTempFile("text.stl", "garbage\n"), &result);
+  EXPECT_NE(result.error.find("as stl: "), std::string::npos) << result.error;
+  EXPECT_NE(result.error.find("Expecting"), std::string::npos) << result.error;
+  // A binary STL announcing 2^31-1 triangles must not make VTK allocate 6 GB and abort.
+  std::string bogus(80, '\0');
+  bogus += std::string("\xff\xff\xff\x7f", 4) + std::string(100, '\0');
+  readSurface(writeTempFile("bogus.stl", bogus), &result);
+  EXPECT_NE(result.error.find("the header announces 2147483647 triangles"), std::string::npos) << result.error;
   readSurface(writeTempFile("garbage.vtp", "<VTKFile>oops"), &result);
   EXPECT_FALSE(result.succeeded);
   readSurface(writeTempFile("mesh.xyz", "1 2 3\n"), &result);
