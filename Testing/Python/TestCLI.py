@@ -1,0 +1,323 @@
+"""Tests of the consistent-remesh command, run as a user would run it.
+
+  pvpython TestCLI.py --command <build>/bin/consistent-remesh [--data DATA] CASE
+
+CASE is one of: collection, given-base-domain, failure-isolation,
+argument-errors, base-domain-mismatch. Every case but argument-errors needs
+the shared data. Each run writes into a fresh temporary folder.
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.dont_write_bytecode = True  # keep the source folder clean
+
+from cmp_test_support import (
+    OCTAHEDRON_POINTS,
+    OCTAHEDRON_TRIANGLES,
+    check,
+    check_base_domain,
+    check_contains,
+    check_equal,
+    landmarked_shrec_models,
+    read_off_header,
+    read_pinned,
+    write_off,
+    write_text,
+)
+
+COMMAND = None
+DATA = None
+
+
+def run_cli(arguments, output=None):
+    """Runs consistent-remesh; returns (exit status, stdout, stderr, report
+    or None). The command must find its Python package by itself, so
+    PYTHONPATH is not passed on."""
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PV_PLUGIN_PATH")}
+    command = [COMMAND] + list(arguments) + (["--output", output] if output else [])
+    result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            universal_newlines=True, timeout=300)
+    check("Traceback" not in result.stderr and "Traceback" not in result.stdout,
+          "consistent-remesh printed a traceback:\n" + result.stderr)
+    report = None
+    if output and os.path.exists(os.path.join(output, "report.json")):
+        with open(os.path.join(output, "report.json")) as f:
+            report = json.load(f)
+    return result.returncode, result.stdout, result.stderr, report
+
+
+def model_arguments(pairs):
+    arguments = []
+    for mesh, landmarks in pairs:
+        arguments += ["--mesh", mesh, "--landmarks", landmarks]
+    return arguments
+
+
+def shrec_pairs():
+    return [(off, vts) for _, off, vts in landmarked_shrec_models(DATA)]
+
+
+def shrec(name, ext):
+    return os.path.join(DATA, "shrec07-fourleg", name + "." + ext)
+
+
+def spot_paths():
+    return os.path.join(DATA, "spot", "spot.obj"), os.path.join(DATA, "spot", "spot_shrec07.pinned")
+
+
+def obj_points(path):
+    with open(path) as f:
+        return [tuple(float(w) for w in line.split()[1:4]) for line in f if line.startswith("v ")]
+
+
+def read_vtp(path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+    check(os.path.isfile(path), "missing output file " + path)
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def write_vtp(path, points, triangles, feature_ids):
+    from vtkmodules.vtkCommonCore import vtkIntArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    polydata = vtkPolyData()
+    vtk_points = vtkPoints()
+    for p in points:
+        vtk_points.InsertNextPoint(p)
+    cells = vtkCellArray()
+    for t in triangles:
+        cells.InsertNextCell(3, t)
+    ids = vtkIntArray()
+    ids.SetName("FeatureId")
+    for f in feature_ids:
+        ids.InsertNextValue(f)
+    polydata.SetPoints(vtk_points)
+    polydata.SetPolys(cells)
+    polydata.GetPointData().AddArray(ids)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(polydata)
+    writer.SetFileName(path)
+    check_equal(writer.Write(), 1, "writing " + path)
+    return path
+
+
+def check_models_ok(report, pairs, what):
+    check_equal(sorted(report["models"]), sorted(os.path.splitext(os.path.basename(m))[0] for m, _ in pairs),
+                what + ": models in the report")
+    check_equal(report["failed"], [], what + ": failed models")
+    for mesh, landmarks in pairs:
+        name = os.path.splitext(os.path.basename(mesh))[0]
+        model = report["models"][name]
+        check_equal(model.get("status"), "ok", "%s: status of %s (error: %s)" % (what, name, model.get("error")))
+        check("error" not in model, "%s: %s is ok but has an error" % (what, name))
+        if mesh.endswith(".off"):
+            vertices, triangles = read_off_header(mesh)
+        else:
+            vertices, triangles = len(obj_points(mesh)), 5856
+        check_equal(model["vertices"], vertices, "%s: vertices of %s" % (what, name))
+        check_equal(model["triangles"], triangles, "%s: triangles of %s" % (what, name))
+        check_equal(model["landmark_count"], 21, "%s: landmark_count of %s" % (what, name))
+        check_equal(model["mesh"], mesh, "%s: mesh of %s" % (what, name))
+        check_equal(model["landmarks"], landmarks, "%s: landmarks of %s" % (what, name))
+
+
+def check_domain_report(domain, source, what):
+    check_equal((domain.get("vertices"), domain.get("triangles"), domain.get("edges")), (21, 38, 57),
+                what + ": base domain vertices, triangles, edges")
+    check_equal(domain.get("source"), source, what + ": base domain source")
+    if source.startswith("built from"):  # the builder's quality measures
+        check(0.0 < domain.get("min_angle_degrees", 0.0) <= 60.0, what + ": min_angle_degrees in %r" % domain)
+        check(0.0 < domain.get("mean_shape_quality", 0.0) <= 1.0, what + ": mean_shape_quality in %r" % domain)
+
+
+def case_collection(tmp):
+    """Spot and every landmarked SHREC'07 model; L0 built from Spot."""
+    spot = spot_paths()
+    pairs = [spot] + shrec_pairs()
+    check_equal(len(pairs), 11, "models in the collection")
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0"], out)
+    check_equal(status, 0, "exit status (stderr: %s)" % stderr)
+    check(report is not None, "no report.json")
+    check_models_ok(report, pairs, "collection")
+    check_domain_report(report["base_domain"], "built from spot", "collection")
+    check_contains(stdout, "base domain: 21 vertices, 38 triangles, 57 edges (built from spot)", "summary")
+
+    domain = read_vtp(os.path.join(out, "base_domain.vtp"))
+    check_base_domain(domain, None, 21, "base_domain.vtp")
+    # Point f of L0 is Spot's landmark f.
+    points = obj_points(spot[0])
+    feature = domain.GetPointData().GetArray("FeatureId")
+    for p in range(21):
+        f = int(feature.GetValue(p))
+        expected = points[read_pinned(spot[1])[f]]
+        check(max(abs(a - b) for a, b in zip(domain.GetPoint(p), expected)) < 1e-12,
+              "base_domain.vtp point %d is not Spot's landmark %d" % (p, f))
+
+
+def case_given_base_domain(tmp):
+    """--base-domain with the published layout, as VTP and as OBJ."""
+    pairs = [(shrec(n, "off"), shrec(n, "vts")) for n in ("381", "384", "391")]
+    layout_points = None
+    for ext in ("vtp", "obj"):
+        layout = os.path.join(DATA, "layouts", "fourleg-381." + ext)
+        out = os.path.join(tmp, ext)
+        status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain", layout], out)
+        check_equal(status, 0, "%s layout: exit status (stdout: %s, stderr: %s)" % (ext, stdout, stderr))
+        check_models_ok(report, pairs, ext + " layout")
+        check_domain_report(report["base_domain"], layout, ext + " layout")
+        check(all("base_domain" not in m["seconds"] for m in report["models"].values()),
+              ext + " layout: a base domain was built although one was given")
+        domain = read_vtp(os.path.join(out, "base_domain.vtp"))
+        check_base_domain(domain, None, 21, ext + " layout base_domain.vtp")
+        # The OBJ has no FeatureId: vertex i is landmark i, as in the VTP.
+        check_equal([int(domain.GetPointData().GetArray("FeatureId").GetValue(i)) for i in range(21)],
+                    list(range(21)), ext + " layout: FeatureId")
+        points = [domain.GetPoint(i) for i in range(21)]
+        if layout_points is None:
+            layout_points = points
+        else:
+            check(max(max(abs(a - b) for a, b in zip(p, q)) for p, q in zip(points, layout_points)) < 1e-5,
+                  "the OBJ and VTP layouts give different base domains")
+
+
+def case_failure_isolation(tmp):
+    """Bad models fail alone; the others are processed."""
+    garbage = write_text(os.path.join(tmp, "garbage.off"), "not a mesh at all\n")
+    missing_landmarks = os.path.join(tmp, "missing.vts")
+    opened = write_off(os.path.join(tmp, "open.off"), OCTAHEDRON_POINTS, OCTAHEDRON_TRIANGLES[:-1])
+    six = write_text(os.path.join(tmp, "six.txt"), "0\n1\n2\n3\n4\n5\n")
+    good = [(shrec("381", "off"), shrec("381", "vts")), (shrec("384", "off"), shrec("384", "vts"))]
+    bad = {
+        "386": ((shrec("386", "off"), shrec("387", "vts")), ["387.vts", "is this the landmark file of another mesh?"]),
+        "garbage": ((garbage, shrec("381", "vts")), [garbage, "not an OFF file"]),
+        "382": ((shrec("382", "off"), missing_landmarks), [missing_landmarks, "cannot open"]),
+        "open": ((opened, six), ["open surface"]),
+    }
+    pairs = [good[0]] + [pair for pair, _ in bad.values()] + [good[1]]
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0"], out)
+    check_equal(status, 1, "exit status with failed models (stderr: %s)" % stderr)
+    check_equal(sorted(report["failed"]), sorted(bad), "failed models")
+    for name in ("381", "384"):
+        check_equal(report["models"][name].get("status"), "ok", "status of " + name)
+    for name, (_, fragments) in bad.items():
+        model = report["models"][name]
+        check_equal(model.get("status"), "failed", "status of " + name)
+        for fragment in fragments:
+            check_contains(model.get("error", ""), fragment, "error of " + name)
+        check_contains(stdout, "FAILED: " + model["error"], "summary line of " + name)
+    check_domain_report(report["base_domain"], "built from 381", "failure isolation")
+    check(os.path.isfile(os.path.join(out, "base_domain.vtp")), "no base_domain.vtp")
+
+    # When the model that should give the base domain fails, nothing can be
+    # done: exit status 3 and every model says why.
+    out = os.path.join(tmp, "out-no-domain")
+    pairs = [bad["386"][0]] + good
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0"], out)
+    check_equal(status, 3, "exit status without a base domain")
+    check_contains(report["base_domain"].get("error", ""), "model 386", "base domain error")
+    for name in ("386", "381", "384"):
+        check_equal(report["models"][name].get("status"), "failed", "status of %s without a base domain" % name)
+    for name in ("381", "384"):
+        check_contains(report["models"][name]["error"], "no base domain", "error of " + name)
+    check(not os.path.exists(os.path.join(out, "base_domain.vtp")), "base_domain.vtp written without a base domain")
+
+
+def case_argument_errors(tmp):
+    """Usage errors: a non-zero exit status, a one-line reason, no output."""
+    a, b = os.path.join(tmp, "a.off"), os.path.join(tmp, "b.off")
+    la, lb = os.path.join(tmp, "a.vts"), os.path.join(tmp, "b.vts")
+    cases = [
+        (["--mesh", a, "--mesh", b, "--landmarks", la], "2 --mesh but 1 --landmarks"),
+        (["--mesh", a, "--landmarks", la, "--landmarks", lb], "1 --mesh but 2 --landmarks"),
+        (["--mesh", a, "--landmarks", la, "--mesh", b, "--landmarks", lb, "--base-domain-from", "2"],
+         "--base-domain-from 2: give the 0-based index of one of the 2 meshes (0 to 1)"),
+        (["--mesh", a, "--landmarks", la, "--base-domain-from", "-1"], "--base-domain-from -1"),
+        (["--mesh", a, "--landmarks", la, "--base-domain", a, "--base-domain-from", "0"], "not allowed with"),
+        ([], "at least one --mesh"),
+        (["--mesh", a, "--landmarks", la, "--mesh", os.path.join(tmp, "other", "a.obj"), "--landmarks", lb],
+         "two meshes share the name a"),
+    ]
+    for arguments, message in cases:
+        out = os.path.join(tmp, "out")
+        status, stdout, stderr, report = run_cli(arguments, out)
+        what = "consistent-remesh " + " ".join(arguments)
+        check_equal(status, 2, what + ": exit status")
+        check_contains(stderr, message, what + ": stderr")
+        check_contains(stderr, "usage: consistent-remesh", what + ": stderr")
+        check(not os.path.exists(out), what + ": the output folder was created")
+    status, stdout, stderr, _ = run_cli(["--mesh", a, "--landmarks", la])
+    check(status != 0 and "--output" in stderr, "a missing --output is not reported: %s" % stderr)
+    a_file = os.path.join(tmp, "not-a-folder")
+    open(a_file, "w").close()
+    status, stdout, stderr, _ = run_cli(["--mesh", a, "--landmarks", la], a_file)
+    check_equal(status, 2, "--output naming a file: exit status")
+    check_contains(stderr, "exists and is not a folder", "--output naming a file: stderr")
+    check("Traceback" not in stderr, "--output naming a file: traceback %s" % stderr)
+
+
+def case_base_domain_mismatch(tmp):
+    """A base domain with 6 vertices for models with 21 landmarks."""
+    octahedron = write_vtp(os.path.join(tmp, "octahedron.vtp"), OCTAHEDRON_POINTS, OCTAHEDRON_TRIANGLES, range(6))
+    pairs = [(shrec(n, "off"), shrec(n, "vts")) for n in ("381", "391")]
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain", octahedron], out)
+    check_equal(status, 1, "exit status (stderr: %s)" % stderr)
+    check_equal(sorted(report["failed"]), ["381", "391"], "failed models")
+    check_equal((report["base_domain"]["vertices"], report["base_domain"]["triangles"]), (6, 8), "base domain size")
+    for name in ("381", "391"):
+        model = report["models"][name]
+        check_equal(model.get("status"), "failed", "status of " + name)
+        check_contains(model.get("error", ""), "base domain has 6 vertices but the surface has 21 landmarks",
+                       "error of " + name)
+
+    # A base domain file that cannot be read: exit status 3.
+    missing = os.path.join(tmp, "missing.vtp")
+    out = os.path.join(tmp, "out-missing")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain", missing], out)
+    check_equal(status, 3, "exit status with an unreadable base domain")
+    check_contains(report["base_domain"].get("error", ""), missing, "base domain error")
+    for name in ("381", "391"):
+        check_contains(report["models"][name].get("error", ""), "no base domain", "error of " + name)
+
+
+CASES = {
+    "collection": case_collection,
+    "given-base-domain": case_given_base_domain,
+    "failure-isolation": case_failure_isolation,
+    "argument-errors": case_argument_errors,
+    "base-domain-mismatch": case_base_domain_mismatch,
+}
+
+
+def main():
+    global COMMAND, DATA
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--command", required=True)
+    parser.add_argument("--data")
+    parser.add_argument("case", choices=sorted(CASES))
+    args = parser.parse_args()
+    COMMAND = args.command
+    DATA = args.data
+    check(os.access(COMMAND, os.X_OK), "%s is not an executable" % COMMAND)
+    if args.case != "argument-errors":
+        check(DATA and os.path.isdir(DATA), "this case needs --data")
+    with tempfile.TemporaryDirectory(prefix="cmp-cli-") as tmp:
+        CASES[args.case](tmp)
+    print("consistent-remesh %s: ok" % args.case)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,130 @@
+"""Bad input through the plugin's proxies: each failing filter produces no
+output and says what is wrong through vtkErrorMacro; fixing the input makes
+the same pipeline work again.
+
+  pvpython TestPluginBadInput.py PLUGIN.so
+"""
+
+import os
+import sys
+import tempfile
+
+sys.dont_write_bytecode = True  # keep the source folder clean
+
+from cmp_test_support import (
+    OCTAHEDRON_POINTS,
+    OCTAHEDRON_TRIANGLES,
+    TETRAHEDRON_POINTS,
+    TETRAHEDRON_TRIANGLES,
+    ErrorCapture,
+    check,
+    check_base_domain,
+    check_contains,
+    check_equal,
+    field_value,
+    write_off,
+    write_text,
+)
+
+from paraview.simple import *  # noqa: F401,F403
+
+
+def run(proxy, *upstream):
+    """Fetches the output of `proxy`; returns (data, error messages of
+    `proxy` and `upstream`)."""
+    objects = [p.GetClientSideObject() for p in (proxy,) + upstream]
+    with ErrorCapture(*objects) as errors:
+        data = servermanager.Fetch(proxy)  # noqa: F405
+    return data, errors.text
+
+
+def expect_failure(proxy, fragments, what, *upstream):
+    data, text = run(proxy, *upstream)
+    check_equal(data.GetNumberOfPoints(), 0, what + ": output points")
+    check(text, what + ": no error message")
+    for fragment in fragments:
+        check_contains(text, fragment, what)
+    print("%s: %s" % (what, text.strip().splitlines()[-1]))
+
+
+def expect_success(proxy, points, what, *upstream):
+    data, text = run(proxy, *upstream)
+    check_equal(text, "", what + ": error messages")
+    check_equal(data.GetNumberOfPoints(), points, what + ": output points")
+    return data
+
+
+def main():
+    LoadPlugin(sys.argv[1], ns=globals())  # noqa: F405
+    with tempfile.TemporaryDirectory(prefix="cmp-bad-input-") as tmp:
+        run_cases(tmp)
+    print("plugin bad input: ok")
+    return 0
+
+
+def run_cases(tmp):
+    closed = write_off(os.path.join(tmp, "octahedron.off"), OCTAHEDRON_POINTS, OCTAHEDRON_TRIANGLES)
+    # The octahedron without its last triangle: 3 boundary edges.
+    opened = write_off(os.path.join(tmp, "open.off"), OCTAHEDRON_POINTS, OCTAHEDRON_TRIANGLES[:-1])
+    tetrahedron = write_off(os.path.join(tmp, "tetrahedron.off"), TETRAHEDRON_POINTS, TETRAHEDRON_TRIANGLES)
+    garbage = write_text(os.path.join(tmp, "garbage.off"), "this is not a mesh\n1 2 3\n")
+    missing = os.path.join(tmp, "missing.off")
+    all_six = write_text(os.path.join(tmp, "six.pinned"), "".join("lk %d\n" % v for v in range(6)))
+    duplicate = write_text(os.path.join(tmp, "duplicate.pinned"), "lk 0\nlk 4\nlk 0\nlk 5\n")
+    out_of_range = write_text(os.path.join(tmp, "range.pinned"), "lk 0\nlk 6\n")
+    tetra_ids = write_text(os.path.join(tmp, "tetra.txt"), "0\n1\n2\n3\n")
+
+    # The reader.
+    reader = ConsistentMeshSurfaceReader(FileName=garbage)  # noqa: F405
+    expect_failure(reader, [garbage, "not an OFF file"], "garbage file")
+    reader.FileName = missing
+    expect_failure(reader, [missing, "no such file"], "missing file")
+    unknown = write_text(os.path.join(tmp, "mesh.xyz"), "0 0 0\n")
+    reader.FileName = unknown
+    expect_failure(reader, [unknown, "unknown extension"], "unknown extension")
+
+    # The check of an open surface, and the builder given it.
+    reader.FileName = opened
+    expect_success(reader, 6, "reader of the open surface")
+    checked = CheckInputs(Input=reader)  # noqa: F405
+    expect_failure(checked, ["open surface", "3 boundary edges"], "open surface", reader)
+    landmarks = LandmarksFromFile(Input=reader, LandmarkFile=all_six)  # noqa: F405
+    builder = BaseDomainBuilder(Input=landmarks)  # noqa: F405
+    expect_failure(builder, ["open surface"], "base domain of an open surface", landmarks, reader)
+
+    # The same proxies recover once the surface is closed.
+    reader.FileName = closed
+    surface = expect_success(checked, 6, "closed octahedron through CheckInputs", reader)
+    check_equal(field_value(surface, "InputCheck"), "ok", "InputCheck field value")
+    domain = expect_success(builder, 6, "base domain of the octahedron", landmarks, reader)
+    check_base_domain(domain, servermanager.Fetch(landmarks), 6, "octahedron L0")  # noqa: F405
+
+    # Landmark files.
+    landmarks.LandmarkFile = duplicate
+    expect_failure(landmarks, [duplicate, "duplicate landmark", "features 0 and 2"], "duplicate landmark", reader)
+    landmarks.LandmarkFile = out_of_range
+    expect_failure(landmarks, ["landmark vertex id 6 is out of range"], "out-of-range landmark", reader)
+    landmarks.LandmarkFile = os.path.join(tmp, "missing.pinned")
+    expect_failure(landmarks, ["missing.pinned"], "missing landmark file", reader)
+    landmarks.LandmarkFile = all_six
+    landmarks.ExpectedLandmarkCount = 21
+    expect_failure(landmarks, ["6 landmarks but 21 are expected"], "unexpected landmark count", reader)
+    landmarks.ExpectedLandmarkCount = 6
+    expect_success(landmarks, 6, "six landmarks, six expected", reader)
+
+    # RequireLandmarks, and a base domain on the optional second port.
+    checked.RequireLandmarks = 1
+    expect_failure(checked, ["FeatureId"], "RequireLandmarks without landmarks", reader)
+    tetra_reader = ConsistentMeshSurfaceReader(FileName=tetrahedron)  # noqa: F405
+    tetra_domain = LandmarksFromFile(Input=tetra_reader, LandmarkFile=tetra_ids)  # noqa: F405
+    against = CheckInputs(Input=landmarks, BaseDomain=tetra_domain)  # noqa: F405
+    expect_failure(
+        against, ["base domain has 4 vertices but the surface has 6 landmarks"], "base domain of the wrong size",
+        landmarks, reader, tetra_domain, tetra_reader,
+    )
+    against.BaseDomain = builder
+    expect_success(against, 6, "octahedron against its own base domain", landmarks, reader, builder)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
