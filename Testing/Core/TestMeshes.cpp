@@ -5,9 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <cstdio>
-#include <fstream>
-#include <unistd.h>
 
 namespace cmp::test
 {
@@ -73,20 +70,6 @@ TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b)
     mesh.triangles.push_back(tri);
   }
   return mesh;
-}
-
-std::string sharedDataDir()
-{
-  return CMP_SHARED_DATA_DIR;
-}
-
-std::string writeTempFile(const std::string& name, const std::string& text)
-{
-  const char* tmp = std::getenv("TMPDIR");
-  const std::string path =
-    std::string(tmp ? tmp : "/tmp") + "/cmp_test_" + std::to_string(::getpid()) + "_" + name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
 }
 
 std::vector<std::string> landmarkedFourLeggedModels()

@@ -3,6 +3,7 @@
 /// \brief Small meshes the core tests build in code, and access to the
 ///        shared real data.
 
+#include "TestData.h"
 #include "TriangleMesh.h"
 
 #include <string>
@@ -26,23 +27,8 @@ TriangleMesh torus(int n, int m);
 /// \brief Appends `b` to `a` as a separate component.
 TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b);
 
-/// \brief The shared data folder ("" when not configured).
-std::string sharedDataDir();
-
-/// \brief Writes `text` to a fresh file in the temp folder; returns its path.
-std::string writeTempFile(const std::string& name, const std::string& text);
-
 /// \brief Paths without extension of every SHREC'07 four-legged model that
 ///        has both `.off` and `.vts` (".../381", ...), sorted.
 std::vector<std::string> landmarkedFourLeggedModels();
 
 } // namespace cmp::test
-
-/// Skips the current test when the shared data is absent (a developer
-/// machine without ../shared); CI always has it.
-#define CMP_REQUIRE_SHARED_DATA()                                                                                     \
-  do                                                                                                                   \
-  {                                                                                                                    \
-    if (cmp::test::sharedDataDir().empty())                                                                           \
-      GTEST_SKIP() << "CMP_SHARED_DATA_DIR is not set";                                                               \
-  } while (0)

@@ -3,6 +3,8 @@
 /// \brief Helpers for the VTK filter tests: running an algorithm while
 ///        capturing its error message, writing small surfaces to files.
 
+#include "TestData.h"
+
 #include <vtkSmartPointer.h>
 
 #include <string>
@@ -23,15 +25,6 @@ struct RunResult
 /// \brief Updates `algorithm`, capturing its ErrorEvent instead of printing it.
 RunResult run(vtkAlgorithm* algorithm);
 
-/// \brief The shared data folder ("" when not configured).
-std::string sharedDataDir();
-
-/// \brief A path in a fresh per-process temp folder.
-std::string tempPath(const std::string& name);
-
-/// \brief Writes `text` to tempPath(name) and returns the path.
-std::string writeTempFile(const std::string& name, const std::string& text);
-
 /// \brief OFF text of a regular octahedron, optionally without its last triangle.
 std::string octahedronOFF(bool open = false);
 
@@ -39,10 +32,3 @@ std::string octahedronOFF(bool open = false);
 vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::string& landmarks);
 
 } // namespace cmp::test
-
-#define CMP_REQUIRE_SHARED_DATA()                                                                                     \
-  do                                                                                                                   \
-  {                                                                                                                    \
-    if (cmp::test::sharedDataDir().empty())                                                                           \
-      GTEST_SKIP() << "CMP_SHARED_DATA_DIR is not set";                                                               \
-  } while (0)
