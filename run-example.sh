@@ -1,21 +1,27 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs consistent-remesh on the landmarked four-legged
-# animals of SHREC'07 and Spot (../shared/data), with the base domain built
-# from model 381. Results go to ./results (or the folder given as $1).
+# Sets up, builds and runs consistent-remesh. With the shared sample data
+# beside the project (../shared/data, or $CMP_SHARED_DATA_DIR) it processes
+# the landmarked SHREC'07 four-legged animals and Spot, with the base domain
+# built from model 381; otherwise it runs on the example collection shipped
+# in Data/examples. Results go to ./results (or the folder given as $1).
 set -euo pipefail
 cd "$(dirname "$0")"
 ./setup.sh
 
-data="${CMP_SHARED_DATA_DIR:-../shared/data}"
-if [ ! -d "$data/shrec07-fourleg" ]; then
-  echo "run-example: no sample data in '$data' (set CMP_SHARED_DATA_DIR)" >&2
-  exit 2
-fi
 output="${1:-results}"
+data="${CMP_SHARED_DATA_DIR:-../shared/data}"
 args=()
-for landmarks in "$data"/shrec07-fourleg/*.vts; do
-  args+=(--mesh "${landmarks%.vts}.off" --landmarks "$landmarks")
-done
-args+=(--mesh "$data/spot/spot.obj" --landmarks "$data/spot/spot_shrec07.pinned")
+if [ -d "$data/shrec07-fourleg" ] && [ -d "$data/spot" ]; then
+  echo "run-example: the four-legged collection in $data"
+  for landmarks in "$data"/shrec07-fourleg/*.vts; do
+    args+=(--mesh "${landmarks%.vts}.off" --landmarks "$landmarks")
+  done
+  args+=(--mesh "$data/spot/spot.obj" --landmarks "$data/spot/spot_shrec07.pinned")
+else
+  echo "run-example: the example collection shipped in Data/examples"
+  args=(--mesh Data/examples/blob.off --landmarks Data/examples/blob.vts
+        --mesh Data/examples/capsule.obj --landmarks Data/examples/capsule.pinned
+        --mesh Data/examples/peanut.off --landmarks Data/examples/peanut.csv)
+fi
 build/bin/consistent-remesh "${args[@]}" --base-domain-from 0 --output "$output"
 echo "run-example: wrote $output/report.json and $output/base_domain.vtp"

@@ -292,7 +292,27 @@ def case_base_domain_mismatch(tmp):
         check_contains(report["models"][name].get("error", ""), "no base domain", "error of " + name)
 
 
+def case_shipped_examples(tmp):
+    """The collection shipped in Data/examples (what run-example.sh uses on a
+    machine without the shared data): one landmark format per model."""
+    examples = os.path.join(DATA, "examples")
+    pairs = [("blob.off", "blob.vts"), ("capsule.obj", "capsule.pinned"), ("peanut.off", "peanut.csv")]
+    arguments = []
+    for mesh, landmarks in pairs:
+        arguments += ["--mesh", os.path.join(examples, mesh), "--landmarks", os.path.join(examples, landmarks)]
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(arguments, out)
+    check_equal(status, 0, "exit status (stderr: %s)" % stderr)
+    check_equal(report["failed"], [], "failed models")
+    for name, vertices in (("blob", 642), ("capsule", 2562), ("peanut", 642)):
+        check_equal(report["models"][name]["vertices"], vertices, name + " vertices")
+        check_equal(report["models"][name]["landmark_count"], 6, name + " landmarks")
+    domain = report["base_domain"]
+    check_equal((domain["vertices"], domain["triangles"], domain["edges"]), (6, 8, 12), "octahedral base domain")
+
+
 CASES = {
+    "shipped-examples": case_shipped_examples,
     "collection": case_collection,
     "given-base-domain": case_given_base_domain,
     "failure-isolation": case_failure_isolation,
