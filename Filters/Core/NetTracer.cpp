@@ -1,0 +1,568 @@
+#include "NetTracer.h"
+
+#include "FeatureParameterization.h"
+#include "SurfaceCheck.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+
+namespace cmp
+{
+
+double curveLength(const EditableMesh& mesh, const std::vector<int>& curve)
+{
+  double length = 0.0;
+  for (std::size_t i = 1; i < curve.size(); ++i)
+    length += (mesh.point(curve[i]) - mesh.point(curve[i - 1])).norm();
+  return length;
+}
+
+namespace
+{
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Edges of the base domain, the triangles beside them and the cyclic
+/// (counter-clockwise) order of edges around every base vertex.
+struct BaseTopology
+{
+  std::vector<std::array<int, 2>> edges;
+  std::vector<int> left, right;
+  std::vector<std::vector<int>> rotation; // per base vertex: incident edge ids, ccw
+
+  void build(const BaseDomain& domain)
+  {
+    CornerTable table;
+    table.build(domain.mesh); // checkBaseDomain() guarantees this works
+    std::vector<int> edgeOf(table.halfedgeCount(), -1);
+    for (int h = 0; h < table.halfedgeCount(); ++h)
+    {
+      if (table.opposite(h) < h)
+        continue;
+      edgeOf[h] = edgeOf[table.opposite(h)] = static_cast<int>(edges.size());
+      edges.push_back({ table.from(h), table.to(h) });
+      left.push_back(CornerTable::triangleOf(h));
+      right.push_back(CornerTable::triangleOf(table.opposite(h)));
+    }
+    rotation.resize(domain.mesh.vertexCount());
+    for (int v = 0; v < domain.mesh.vertexCount(); ++v)
+    {
+      const int start = table.outgoing(v);
+      int h = start;
+      do
+      {
+        rotation[v].push_back(edgeOf[h]);
+        h = table.nextAroundVertex(h);
+      } while (h != start);
+    }
+  }
+
+  int positionAt(int vertex, int edge) const
+  {
+    const auto& ring = rotation[vertex];
+    return static_cast<int>(std::find(ring.begin(), ring.end(), edge) - ring.begin());
+  }
+  int other(int edge, int vertex) const { return edges[edge][0] == vertex ? edges[edge][1] : edges[edge][0]; }
+};
+
+/// Third vertex of a base triangle, given two of its vertices.
+int thirdVertex(const Triangle& tri, int a, int b)
+{
+  for (int v : tri)
+    if (v != a && v != b)
+      return v;
+  return -1;
+}
+
+/// Dijkstra over free mesh vertices. Reused across runs: a stamp marks which
+/// entries belong to the current run, so nothing is cleared per run.
+class BrushFire
+{
+public:
+  /// Grows from `source` through the halfedges `starts` and stops at
+  /// `target`, which it may enter only from a vertex marked as a gate; or,
+  /// with `target < 0`, at the first gate vertex it reaches. Fills `path`
+  /// (source first) and returns its cost, or infinity if nothing was reached.
+  template <class Cost>
+  double run(const EditableMesh& mesh, const std::vector<char>& blocked, int source, const std::vector<int>& starts,
+    int target, const std::vector<int>& gates, Cost cost, std::vector<int>& path)
+  {
+    resize(mesh.vertexCount());
+    ++stamp_;
+    for (int g : gates)
+      gate_[g] = stamp_;
+    Heap heap;
+    for (int h : starts)
+    {
+      const int x = mesh.to(h);
+      if (!blocked[x] || (target < 0 && gate_[x] == stamp_))
+        relax(x, source, cost(source, x), heap);
+    }
+    int reached = -1;
+    while (!heap.empty())
+    {
+      const auto [d, x] = heap.top();
+      heap.pop();
+      if (seen_[x] != stamp_ || d > dist_[x])
+        continue;
+      if (x == target || (target < 0 && gate_[x] == stamp_))
+      {
+        reached = x;
+        break;
+      }
+      if (blocked[x])
+        continue; // only the target may be blocked, and it ends the search
+      const int first = mesh.outgoing(x);
+      int h = first;
+      do
+      {
+        const int y = mesh.to(h);
+        const bool enterTarget = y == target && gate_[x] == stamp_;
+        if (enterTarget || !blocked[y] || (target < 0 && gate_[y] == stamp_))
+          relax(y, x, d + cost(x, y), heap);
+        h = mesh.nextAroundVertex(h);
+      } while (h != first);
+    }
+    path.clear();
+    if (reached < 0)
+      return kInfinity;
+    for (int v = reached; v != source; v = parent_[v])
+      path.push_back(v);
+    path.push_back(source);
+    std::reverse(path.begin(), path.end());
+    return dist_[reached];
+  }
+
+private:
+  using Entry = std::pair<double, int>;
+  using Heap = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
+
+  void resize(int n)
+  {
+    if (static_cast<int>(dist_.size()) < n)
+    {
+      dist_.resize(n);
+      parent_.resize(n);
+      seen_.resize(n, 0);
+      gate_.resize(n, 0);
+    }
+  }
+  void relax(int x, int from, double d, Heap& heap)
+  {
+    if (seen_[x] == stamp_ && dist_[x] <= d)
+      return;
+    seen_[x] = stamp_;
+    dist_[x] = d;
+    parent_[x] = from;
+    heap.push({ d, x });
+  }
+
+  std::vector<double> dist_;
+  std::vector<int> parent_;
+  std::vector<unsigned> seen_, gate_;
+  unsigned stamp_ = 0;
+};
+
+class Tracer
+{
+public:
+  Tracer(const BaseDomain& domain, const NetTracerOptions& options, TracedNet& net, NetTracerReport& report)
+    : domain_(domain)
+    , options_(options)
+    , net_(net)
+    , report_(report)
+  {
+    base_.build(domain);
+  }
+
+  Status run(const TriangleMesh& surface, const LandmarkList& landmarks)
+  {
+    if (Status s = net_.mesh.build(surface); !s.ok())
+      return s;
+    if (Status s = computeFeatureCoordinates(surface, landmarks, coordinates_); !s.ok())
+      return s;
+    const int baseVertices = domain_.mesh.vertexCount();
+    net_.landmarkVertex.resize(baseVertices);
+    featureOf_.resize(baseVertices);
+    occupied_.assign(surface.vertexCount(), 0);
+    for (int bv = 0; bv < baseVertices; ++bv)
+    {
+      featureOf_[bv] = domain_.featureIds[bv];
+      net_.landmarkVertex[bv] = landmarks[featureOf_[bv]];
+      occupied_[net_.landmarkVertex[bv]] = 1;
+    }
+    net_.baseEdges = base_.edges;
+    net_.leftTriangle = base_.left;
+    net_.rightTriangle = base_.right;
+    const int edgeCount = static_cast<int>(base_.edges.size());
+    net_.curves.assign(edgeCount, {});
+    tentative_.assign(edgeCount, {});
+    traced_.assign(edgeCount, 0);
+    penalties_.assign(edgeCount, 0);
+    makeRoom(net_.landmarkVertex);
+
+    if (Status s = traceAll(); !s.ok())
+      return s;
+    for (const auto& curve : net_.curves)
+      report_.netLength += curveLength(net_.mesh, curve);
+    return labelPatches();
+  }
+
+private:
+  struct Candidate
+  {
+    double priority;
+    int edge;
+    bool operator>(const Candidate& other) const { return priority > other.priority; }
+  };
+
+  /// Spanning tree of the base domain first, then the rest; shortest
+  /// tentative curve first; invalid ones re-traced, swirling ones postponed.
+  Status traceAll()
+  {
+    const int edgeCount = static_cast<int>(base_.edges.size());
+    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
+    for (int e = 0; e < edgeCount; ++e)
+    {
+      if (Status s = retrace(e); !s.ok())
+        return s;
+      queue.push({ curveLength(net_.mesh, tentative_[e]), e });
+    }
+    std::vector<int> component(domain_.mesh.vertexCount());
+    std::iota(component.begin(), component.end(), 0);
+    const auto root = [&](int v)
+    {
+      while (component[v] != v)
+        v = component[v] = component[component[v]];
+      return v;
+    };
+    int treeEdges = 0, inserted = 0;
+    const int treeSize = domain_.mesh.vertexCount() - 1;
+    std::vector<int> deferred;
+    while (!queue.empty())
+    {
+      const Candidate candidate = queue.top();
+      queue.pop();
+      const int e = candidate.edge;
+      const int a = base_.edges[e][0], b = base_.edges[e][1];
+      if (treeEdges < treeSize && root(a) == root(b))
+      {
+        deferred.push_back(e); // would close a cycle before the tree is complete
+        continue;
+      }
+      if (!isValid(e))
+      {
+        ++report_.retraced;
+        if (Status s = retrace(e); !s.ok())
+          return s;
+        queue.push({ curveLength(net_.mesh, tentative_[e]), e });
+        continue;
+      }
+      if (options_.detectSwirls && penalties_[e] < options_.maxPenalties && swirls(e))
+      {
+        ++penalties_[e];
+        ++report_.penalised;
+        queue.push({ candidate.priority * options_.penaltyFactor, e });
+        continue;
+      }
+      insert(e);
+      ++inserted;
+      if (options_.progress)
+        options_.progress(static_cast<double>(inserted) / edgeCount);
+      if (treeEdges < treeSize)
+      {
+        component[root(a)] = root(b);
+        if (++treeEdges == treeSize)
+        {
+          for (int d : deferred)
+            queue.push({ curveLength(net_.mesh, tentative_[d]), d });
+          deferred.clear();
+        }
+      }
+    }
+    if (inserted != edgeCount)
+      return Status::error("internal error: only " + std::to_string(inserted) + " of " + std::to_string(edgeCount) +
+        " curves were traced");
+    return {};
+  }
+
+  /// Outgoing mesh halfedges of base vertex bv's landmark that lie strictly
+  /// between the curves of the traced edges found by searching the rotation
+  /// backwards from position `before` and forwards from position `after`.
+  std::vector<int> sector(int bv, int before, int after) const
+  {
+    const auto& ring = base_.rotation[bv];
+    const int degree = static_cast<int>(ring.size());
+    int predecessor = -1, successor = -1;
+    for (int k = 0; k < degree && predecessor < 0; ++k)
+    {
+      const int e = ring[((before - k) % degree + degree) % degree];
+      predecessor = traced_[e] ? e : -1;
+    }
+    for (int k = 0; k < degree && successor < 0; ++k)
+    {
+      const int e = ring[(after + k) % degree];
+      successor = traced_[e] ? e : -1;
+    }
+    const int v = net_.landmarkVertex[bv];
+    std::vector<int> halfedges;
+    const int first = net_.mesh.outgoing(v);
+    if (predecessor < 0)
+    {
+      int h = first;
+      do
+      {
+        halfedges.push_back(h);
+        h = net_.mesh.nextAroundVertex(h);
+      } while (h != first);
+      return halfedges;
+    }
+    const int from = curveHalfedgeAt(predecessor, bv);
+    const int until = curveHalfedgeAt(successor, bv);
+    for (int h = net_.mesh.nextAroundVertex(from); h != until; h = net_.mesh.nextAroundVertex(h))
+      halfedges.push_back(h);
+    return halfedges;
+  }
+
+  /// The mesh halfedge by which the curve of a traced edge leaves bv's landmark.
+  int curveHalfedgeAt(int e, int bv) const
+  {
+    const auto& curve = net_.curves[e];
+    const bool atStart = base_.edges[e][0] == bv;
+    return net_.mesh.findHalfedge(net_.landmarkVertex[bv], atStart ? curve[1] : curve[curve.size() - 2]);
+  }
+
+  std::vector<int> edgeSector(int e, int bv) const
+  {
+    const int position = base_.positionAt(bv, e);
+    return sector(bv, position - 1, position + 1);
+  }
+
+  Status retrace(int e)
+  {
+    const int a = base_.edges[e][0], b = base_.edges[e][1];
+    const std::vector<int> starts = edgeSector(e, a);
+    std::vector<int> gates;
+    for (int h : edgeSector(e, b))
+      gates.push_back(net_.mesh.to(h));
+    const int fa = featureOf_[a], fb = featureOf_[b];
+    const double weight = options_.parameterizationWeight;
+    const auto cost = [&](int x, int y)
+    {
+      const double k = 0.5 * (coordinates_.at(x, fa) + coordinates_.at(x, fb) + coordinates_.at(y, fa) +
+                         coordinates_.at(y, fb));
+      return (net_.mesh.point(x) - net_.mesh.point(y)).norm() * (1.0 + weight * (1.0 - k));
+    };
+    ++report_.traces;
+    const double found = fire_.run(net_.mesh, occupied_, net_.landmarkVertex[a], starts, net_.landmarkVertex[b],
+      gates, cost, tentative_[e]);
+    if (found == kInfinity)
+      return Status::error("internal error: no curve found between features " + std::to_string(featureOf_[a]) +
+        " and " + std::to_string(featureOf_[b]));
+    return {};
+  }
+
+  /// Is the tentative curve still free, still made of mesh edges, and does
+  /// it still leave both landmarks in the right sector?
+  bool isValid(int e) const
+  {
+    const auto& path = tentative_[e];
+    for (std::size_t i = 1; i + 1 < path.size(); ++i)
+      if (occupied_[path[i]])
+        return false;
+    for (std::size_t i = 1; i < path.size(); ++i)
+      if (net_.mesh.findHalfedge(path[i - 1], path[i]) < 0)
+        return false;
+    const auto inSector = [&](int bv, int neighbour)
+    {
+      const int h = net_.mesh.findHalfedge(net_.landmarkVertex[bv], neighbour);
+      const std::vector<int> allowed = edgeSector(e, bv);
+      return std::find(allowed.begin(), allowed.end(), h) != allowed.end();
+    };
+    return inSector(base_.edges[e][0], path[1]) && inSector(base_.edges[e][1], path[path.size() - 2]);
+  }
+
+  /// The paper's swirl detector: from the third vertex of each base triangle
+  /// beside the edge, the closest point of the tentative curve must be
+  /// reached from that triangle's side.
+  bool swirls(int e)
+  {
+    const int a = base_.edges[e][0], b = base_.edges[e][1];
+    const int c = thirdVertex(domain_.mesh.triangles[base_.left[e]], a, b);
+    const int d = thirdVertex(domain_.mesh.triangles[base_.right[e]], a, b);
+    // Corner of (a, b, c) at c lies after edge (c, a); of (b, a, d) at d after (d, b).
+    const int ca = edgeBetween(c, a), cb = edgeBetween(c, b), db = edgeBetween(d, b), da = edgeBetween(d, a);
+    return reachesSide(e, c, base_.positionAt(c, ca), base_.positionAt(c, cb)) == Side::Right ||
+      reachesSide(e, d, base_.positionAt(d, db), base_.positionAt(d, da)) == Side::Left;
+  }
+
+  enum class Side
+  {
+    Left,
+    Right,
+    Unknown
+  };
+
+  Side reachesSide(int e, int bv, int before, int after)
+  {
+    const auto& path = tentative_[e];
+    if (path.size() < 3)
+      return Side::Unknown;
+    const std::vector<int> interior(path.begin() + 1, path.end() - 1);
+    const auto length = [&](int x, int y) { return (net_.mesh.point(x) - net_.mesh.point(y)).norm(); };
+    std::vector<int> reach;
+    ++report_.traces;
+    if (fire_.run(net_.mesh, occupied_, net_.landmarkVertex[bv], sector(bv, before, after), -1, interior, length,
+          reach) == kInfinity)
+      return Side::Unknown;
+    const int hit = reach.back();
+    const int from = reach[reach.size() - 2];
+    const std::size_t i = std::find(path.begin(), path.end(), hit) - path.begin();
+    // Counter-clockwise from the forward direction sweeps the left side.
+    const int forward = net_.mesh.findHalfedge(hit, path[i + 1]);
+    for (int h = net_.mesh.nextAroundVertex(forward);; h = net_.mesh.nextAroundVertex(h))
+    {
+      if (net_.mesh.to(h) == from)
+        return Side::Left;
+      if (net_.mesh.to(h) == path[i - 1])
+        return Side::Right;
+    }
+  }
+
+  int edgeBetween(int u, int v) const
+  {
+    for (int e : base_.rotation[u])
+      if (base_.other(e, u) == v)
+        return e;
+    return -1;
+  }
+
+  void insert(int e)
+  {
+    net_.curves[e] = tentative_[e];
+    traced_[e] = 1;
+    const auto& curve = net_.curves[e];
+    for (std::size_t i = 0; i < curve.size(); ++i)
+    {
+      occupied_[curve[i]] = 1;
+      if (i + 1 < curve.size())
+      {
+        const int h = net_.mesh.findHalfedge(curve[i], curve[i + 1]);
+        net_.mesh.setTag(h, e);
+        net_.mesh.setTag(net_.mesh.opposite(h), e);
+      }
+    }
+    makeRoom(curve);
+  }
+
+  /// Splits every non-curve edge between two occupied vertices around
+  /// `vertices`, so that every gap between curves holds a free vertex.
+  void makeRoom(const std::vector<int>& vertices)
+  {
+    std::vector<std::pair<int, int>> crowded;
+    for (int u : vertices)
+    {
+      const int first = net_.mesh.outgoing(u);
+      int h = first;
+      do
+      {
+        if (occupied_[net_.mesh.to(h)] && net_.mesh.tag(h) < 0)
+          crowded.emplace_back(u, net_.mesh.to(h));
+        h = net_.mesh.nextAroundVertex(h);
+      } while (h != first);
+    }
+    for (const auto& [u, x] : crowded)
+    {
+      const int h = net_.mesh.findHalfedge(u, x); // indices move as edges split
+      if (h < 0 || net_.mesh.tag(h) >= 0)
+        continue;
+      const int m = net_.mesh.splitEdge(h);
+      coordinates_.appendInterpolated(u, x, 0.5);
+      occupied_.push_back(0);
+      (void)m;
+      ++report_.splitEdges;
+    }
+  }
+
+  /// Every triangle gets the base triangle on its side of the curves.
+  Status labelPatches()
+  {
+    EditableMesh& mesh = net_.mesh;
+    auto& patch = net_.patchOfTriangle;
+    patch.assign(mesh.triangleCount(), -1);
+    std::vector<int> stack;
+    const auto seed = [&](int t, int label)
+    {
+      if (patch[t] < 0)
+      {
+        patch[t] = label;
+        stack.push_back(t);
+      }
+    };
+    for (int e = 0; e < static_cast<int>(net_.curves.size()); ++e)
+    {
+      const auto& curve = net_.curves[e];
+      for (std::size_t i = 0; i + 1 < curve.size(); ++i)
+      {
+        const int h = mesh.findHalfedge(curve[i], curve[i + 1]);
+        seed(EditableMesh::triangleOf(h), base_.left[e]);
+        seed(EditableMesh::triangleOf(mesh.opposite(h)), base_.right[e]);
+      }
+    }
+    while (!stack.empty())
+    {
+      const int t = stack.back();
+      stack.pop_back();
+      for (int h = 3 * t; h < 3 * t + 3; ++h)
+      {
+        if (mesh.tag(h) >= 0)
+          continue;
+        const int neighbour = EditableMesh::triangleOf(mesh.opposite(h));
+        if (patch[neighbour] >= 0 && patch[neighbour] != patch[t])
+          return Status::error("internal error: patches " + std::to_string(patch[t]) + " and " +
+            std::to_string(patch[neighbour]) + " touch away from a curve");
+        seed(neighbour, patch[t]);
+      }
+    }
+    if (std::find(patch.begin(), patch.end(), -1) != patch.end())
+      return Status::error("internal error: some triangles belong to no patch");
+    return {};
+  }
+
+  const BaseDomain& domain_;
+  const NetTracerOptions& options_;
+  TracedNet& net_;
+  NetTracerReport& report_;
+  BaseTopology base_;
+  FeatureCoordinates coordinates_;
+  std::vector<int> featureOf_;
+  std::vector<char> occupied_;
+  std::vector<std::vector<int>> tentative_;
+  std::vector<char> traced_;
+  std::vector<int> penalties_;
+  BrushFire fire_;
+};
+
+} // namespace
+
+Status traceFeatureNet(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
+  TracedNet& net, const NetTracerOptions& options, NetTracerReport* report)
+{
+  if (const SurfaceCheckResult check = checkSurface(surface); !check.ok())
+    return Status::error(check.message);
+  if (Status s = validateLandmarks(landmarks, surface.vertexCount(), domain.mesh.vertexCount()); !s.ok())
+    return s;
+  if (Status s = checkBaseDomain(domain, static_cast<int>(landmarks.size())); !s.ok())
+    return s;
+  NetTracerReport localReport;
+  NetTracerReport& out = report ? *report : localReport;
+  out = NetTracerReport{};
+  net = TracedNet{};
+  Tracer tracer(domain, options, net, out);
+  return tracer.run(surface, landmarks);
+}
+
+} // namespace cmp

@@ -1,0 +1,269 @@
+#include "BaseDomainBuilder.h"
+#include "MeshFile.h"
+#include "NetTracer.h"
+#include "NetValidator.h"
+#include "TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace cmp;
+
+namespace
+{
+
+test::LabelledSurface labelled(const TracedNet& net, const BaseDomain& domain)
+{
+  test::LabelledSurface out;
+  const TriangleMesh mesh = net.mesh.toTriangleMesh();
+  for (const Vec3& p : mesh.points)
+    out.points.push_back({ p.x(), p.y(), p.z() });
+  for (const Triangle& t : mesh.triangles)
+    out.triangles.push_back({ t[0], t[1], t[2] });
+  out.patchId = net.patchOfTriangle;
+  out.featureId.assign(mesh.vertexCount(), -1);
+  for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
+    out.featureId[net.landmarkVertex[bv]] = domain.featureIds[bv];
+  return out;
+}
+
+test::BaseTriangles baseTriangles(const BaseDomain& domain)
+{
+  test::BaseTriangles out;
+  for (const Triangle& t : domain.mesh.triangles)
+    out.triangles.push_back({ domain.featureIds[t[0]], domain.featureIds[t[1]], domain.featureIds[t[2]] });
+  return out;
+}
+
+/// Traces and runs the independent validator; returns the report.
+NetTracerReport expectValidNet(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
+  const std::string& what, NetTracerOptions options = {})
+{
+  TracedNet net;
+  NetTracerReport report;
+  const Status status = traceFeatureNet(surface, landmarks, domain, net, options, &report);
+  EXPECT_TRUE(status.ok()) << what << ": " << status.message();
+  if (!status.ok())
+    return report;
+  const test::LabelledSurface out = labelled(net, domain);
+  for (const std::string& problem : test::validateLayout(out, baseTriangles(domain)))
+    ADD_FAILURE() << what << ": " << problem;
+  EXPECT_NEAR(test::totalArea(out), surfaceArea(surface), 1e-9 * surfaceArea(surface)) << what;
+  EXPECT_EQ(net.curves.size(), static_cast<std::size_t>(edgeCount(domain.mesh)));
+  return report;
+}
+
+TriangleMesh bumpySphere(int levels)
+{
+  TriangleMesh mesh = test::sphere(levels);
+  for (Vec3& p : mesh.points)
+    p *= 1.0 + 0.2 * std::sin(5 * p.x()) * std::sin(4 * p.y()) * std::sin(3 * p.z());
+  return mesh;
+}
+
+int nearestVertex(const TriangleMesh& mesh, const Vec3& direction)
+{
+  int best = 0;
+  for (int v = 1; v < mesh.vertexCount(); ++v)
+    if (mesh.points[v].normalized().dot(direction.normalized()) >
+      mesh.points[best].normalized().dot(direction.normalized()))
+      best = v;
+  return best;
+}
+
+/// A base domain whose vertex i is feature i, with the given triangles.
+BaseDomain domainOf(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles)
+{
+  BaseDomain domain;
+  domain.mesh.points = positions;
+  domain.mesh.triangles = triangles;
+  for (int i = 0; i < static_cast<int>(positions.size()); ++i)
+    domain.featureIds.push_back(i);
+  return domain;
+}
+
+BaseDomain octahedronDomain()
+{
+  const TriangleMesh o = test::octahedron();
+  return domainOf(o.points, o.triangles);
+}
+
+LandmarkList landmarksAt(const TriangleMesh& mesh, const std::vector<Vec3>& directions)
+{
+  LandmarkList landmarks;
+  for (const Vec3& d : directions)
+    landmarks.push_back(nearestVertex(mesh, d));
+  return landmarks;
+}
+
+} // namespace
+
+TEST(NetTracer, FourFullyConnectedLandmarksOfFigure3)
+{
+  // The paper's Figure 3: naive shortest paths cross; ours must not.
+  const TriangleMesh sphere = bumpySphere(4);
+  const TriangleMesh tetra = test::tetrahedron(Vec3(-0.25, -0.25, -0.25));
+  const BaseDomain domain = domainOf(tetra.points, tetra.triangles);
+  expectValidNet(sphere, landmarksAt(sphere, tetra.points), domain, "tetrahedron");
+}
+
+TEST(NetTracer, OctahedronAndIcosahedronLayoutsOnABumpySphere)
+{
+  const TriangleMesh sphere = bumpySphere(4);
+  const BaseDomain octahedron = octahedronDomain();
+  expectValidNet(sphere, landmarksAt(sphere, octahedron.mesh.points), octahedron, "octahedron");
+
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  const std::vector<Vec3> ico = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 }, { 0, -1, t }, { 0, 1, t },
+    { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 }, { -t, 0, -1 }, { -t, 0, 1 } };
+  const std::vector<Triangle> faces = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 },
+    { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 },
+    { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  const BaseDomain icosahedron = domainOf(ico, faces);
+  ASSERT_TRUE(checkBaseDomain(icosahedron, 12).ok());
+  expectValidNet(sphere, landmarksAt(sphere, ico), icosahedron, "icosahedron");
+}
+
+TEST(NetTracer, EncirclingCaseOfFigure5)
+{
+  // Landmark 5 (the -z vertex of the octahedron) sits inside the base
+  // triangle (0, 2, 4): tracing that triangle's short curves first would
+  // encircle it. The spanning tree comes first, so it cannot happen.
+  const TriangleMesh sphere = bumpySphere(4);
+  std::vector<Vec3> positions = test::octahedron().points;
+  positions[5] = Vec3(0.5, 0.5, 0.7);
+  expectValidNet(sphere, landmarksAt(sphere, positions), octahedronDomain(), "encircled");
+}
+
+TEST(NetTracer, SwirledLayoutStillGivesAValidNet)
+{
+  // Landmarks 0 and 2 trade places: the octahedron's connectivity no longer
+  // matches the geometry, so curves must wind around; the net stays valid.
+  const TriangleMesh sphere = bumpySphere(4);
+  std::vector<Vec3> positions = test::octahedron().points;
+  std::swap(positions[0], positions[2]);
+  std::swap(positions[1], positions[4]);
+  for (bool swirls : { true, false })
+  {
+    NetTracerOptions options;
+    options.detectSwirls = swirls;
+    expectValidNet(sphere, landmarksAt(sphere, positions), octahedronDomain(),
+      swirls ? "swirled" : "swirled, no detector", options);
+  }
+}
+
+TEST(NetTracer, LandmarkOnAThinSpike)
+{
+  TriangleMesh sphere = test::sphere(4);
+  for (Vec3& p : sphere.points)
+    if (p.x() > 0.8)
+      p = Vec3(0.8 + (p.x() - 0.8) * 25.0, 0.3 * p.y(), 0.3 * p.z()); // a long thin spike along +x
+  const BaseDomain octahedron = octahedronDomain();
+  expectValidNet(sphere, landmarksAt(sphere, octahedron.mesh.points), octahedron, "spike");
+}
+
+TEST(NetTracer, PureShortestPathsAreValidToo)
+{
+  NetTracerOptions options;
+  options.parameterizationWeight = 0.0;
+  options.detectSwirls = false;
+  const TriangleMesh sphere = bumpySphere(3);
+  const BaseDomain octahedron = octahedronDomain();
+  expectValidNet(sphere, landmarksAt(sphere, octahedron.mesh.points), octahedron, "shortest", options);
+}
+
+TEST(NetTracer, RefusesBadInput)
+{
+  const TriangleMesh sphere = test::sphere(3);
+  const BaseDomain octahedron = octahedronDomain();
+  TracedNet net;
+  const auto expectError = [&](const Status& s, const std::string& fragment)
+  {
+    EXPECT_FALSE(s.ok());
+    EXPECT_NE(s.message().find(fragment), std::string::npos) << s.message();
+  };
+  expectError(traceFeatureNet(sphere, { 0, 1, 2, 3, 4 }, octahedron, net), "5 landmarks but 6 are expected");
+  expectError(traceFeatureNet(sphere, { 0, 1, 2, 3, 4, 4 }, octahedron, net), "duplicate landmark");
+  TriangleMesh open = sphere;
+  open.triangles.pop_back();
+  expectError(traceFeatureNet(open, { 0, 1, 2, 3, 4, 5 }, octahedron, net), "open surface");
+  BaseDomain torus;
+  torus.mesh = test::torus(3, 3);
+  for (int i = 0; i < 9; ++i)
+    torus.featureIds.push_back(i);
+  expectError(traceFeatureNet(test::sphere(3), { 0, 1, 2, 3, 4, 5, 6, 7, 8 }, torus, net), "genus 1");
+  expectError(traceFeatureNet(TriangleMesh{}, {}, octahedron, net), "empty surface");
+}
+
+TEST(NetTracer, EveryRealModelWithL0From381AndFromSpot)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  struct Model
+  {
+    std::string name;
+    MeshFileData data;
+    LandmarkList landmarks;
+  };
+  std::vector<Model> models;
+  for (const std::string& path : test::landmarkedFourLeggedModels())
+  {
+    Model m{ path.substr(path.find_last_of('/') + 1), {}, {} };
+    ASSERT_TRUE(readOFF(path + ".off", m.data).ok());
+    ASSERT_TRUE(readLandmarkFile(path + ".vts", m.data.mesh, m.data.fileToMeshPoint, m.landmarks).ok());
+    models.push_back(std::move(m));
+  }
+  Model spot{ "spot", {}, {} };
+  ASSERT_TRUE(readOBJ(test::sharedDataDir() + "/spot/spot.obj", spot.data).ok());
+  ASSERT_TRUE(readLandmarkFile(test::sharedDataDir() + "/spot/spot_shrec07.pinned", spot.data.mesh,
+    spot.data.fileToMeshPoint, spot.landmarks)
+                .ok());
+  models.push_back(std::move(spot));
+  ASSERT_GE(models.size(), 11u);
+  for (const std::string source : { "381", "spot" })
+  {
+    const auto it = std::find_if(models.begin(), models.end(), [&](const Model& m) { return m.name == source; });
+    ASSERT_NE(it, models.end());
+    BaseDomain domain;
+    ASSERT_TRUE(buildBaseDomain(it->data.mesh, it->landmarks, domain).ok());
+    for (const Model& model : models)
+    {
+      const NetTracerReport report =
+        expectValidNet(model.data.mesh, model.landmarks, domain, model.name + " with L0 from " + source);
+      std::cout << model.name << " (L0 " << source << "): length/sqrt(area) "
+                << report.netLength / std::sqrt(surfaceArea(model.data.mesh)) << ", retraced " << report.retraced
+                << ", penalised " << report.penalised << ", split edges " << report.splitEdges << "\n";
+    }
+  }
+}
+
+TEST(NetValidator, CatchesBrokenLayouts)
+{
+  const TriangleMesh sphere = bumpySphere(3);
+  const BaseDomain octahedron = octahedronDomain();
+  TracedNet net;
+  ASSERT_TRUE(traceFeatureNet(sphere, landmarksAt(sphere, octahedron.mesh.points), octahedron, net).ok());
+  const test::LabelledSurface good = labelled(net, octahedron);
+  const test::BaseTriangles base = baseTriangles(octahedron);
+  ASSERT_TRUE(test::validateLayout(good, base).empty());
+
+  test::LabelledSurface swapped = good; // two whole patches exchange labels
+  for (int& p : swapped.patchId)
+    p = p == 0 ? 1 : p == 1 ? 0 : p;
+  EXPECT_FALSE(test::validateLayout(swapped, base).empty());
+
+  test::LabelledSurface stray = good; // one triangle inside patch 0 claims patch 7
+  const auto inside = std::find(stray.patchId.begin(), stray.patchId.end(), 0) - stray.patchId.begin();
+  stray.patchId[inside] = 7;
+  EXPECT_FALSE(test::validateLayout(stray, base).empty());
+
+  test::BaseTriangles mirrored = base; // the base domain with reversed orientation
+  for (auto& t : mirrored.triangles)
+    std::swap(t[1], t[2]);
+  EXPECT_FALSE(test::validateLayout(good, mirrored).empty());
+
+  test::LabelledSurface merged = good; // patch 2 swallowed by patch 3: 3 is no longer a 3-landmark disk
+  for (int& p : merged.patchId)
+    p = p == 2 ? 3 : p;
+  EXPECT_FALSE(test::validateLayout(merged, base).empty());
+}
