@@ -22,6 +22,9 @@ Status EditableMesh::build(const TriangleMesh& mesh)
   }
   tags_.assign(opposite_.size(), -1);
   origins_.assign(points_.size(), VertexOrigin{});
+  inputTriangle_.resize(triangles_.size());
+  for (int t = 0; t < triangleCount(); ++t)
+    inputTriangle_[t] = t;
   return {};
 }
 
@@ -58,6 +61,8 @@ int EditableMesh::splitEdge(int h, double t)
   const int t3 = triangleCount(), t4 = t3 + 1;
   triangles_.push_back({ m, b, c });
   triangles_.push_back({ m, a, d });
+  inputTriangle_.push_back(inputTriangle_[t1]);
+  inputTriangle_.push_back(inputTriangle_[t2]);
   opposite_.resize(3 * (t4 + 1), -1);
   tags_.resize(opposite_.size(), -1);
 

@@ -73,6 +73,9 @@ public:
 
   /// \brief How vertex `v` was made.
   const VertexOrigin& origin(int v) const { return origins_[v]; }
+  /// \brief The input triangle that triangle `t` is part of (itself for an
+  ///        input triangle), so cell data can be carried through splits.
+  int inputTriangle(int t) const { return inputTriangle_[t]; }
 
   /// \brief Inserts a vertex at `t` along the edge of `h` and splits the two
   ///        triangles beside it. Returns the new vertex. Afterwards the
@@ -96,6 +99,7 @@ private:
   std::vector<int> outgoing_;
   std::vector<int> tags_;
   std::vector<VertexOrigin> origins_;
+  std::vector<int> inputTriangle_;
 };
 
 } // namespace cmp

@@ -1,7 +1,7 @@
 #include "BaseDomainBuilder.h"
 #include "MeshFile.h"
 #include "NetTracer.h"
-#include "NetValidator.h"
+#include "LayoutValidator.h"
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>
@@ -13,9 +13,9 @@ using namespace cmp;
 namespace
 {
 
-test::LabelledSurface labelled(const TracedNet& net, const BaseDomain& domain)
+LabelledSurface labelled(const TracedNet& net, const BaseDomain& domain)
 {
-  test::LabelledSurface out;
+  LabelledSurface out;
   const TriangleMesh mesh = net.mesh.toTriangleMesh();
   for (const Vec3& p : mesh.points)
     out.points.push_back({ p.x(), p.y(), p.z() });
@@ -28,9 +28,9 @@ test::LabelledSurface labelled(const TracedNet& net, const BaseDomain& domain)
   return out;
 }
 
-test::BaseTriangles baseTriangles(const BaseDomain& domain)
+BaseTriangles baseTriangles(const BaseDomain& domain)
 {
-  test::BaseTriangles out;
+  BaseTriangles out;
   for (const Triangle& t : domain.mesh.triangles)
     out.triangles.push_back({ domain.featureIds[t[0]], domain.featureIds[t[1]], domain.featureIds[t[2]] });
   return out;
@@ -46,10 +46,10 @@ NetTracerReport expectValidNet(const TriangleMesh& surface, const LandmarkList& 
   EXPECT_TRUE(status.ok()) << what << ": " << status.message();
   if (!status.ok())
     return report;
-  const test::LabelledSurface out = labelled(net, domain);
-  for (const std::string& problem : test::validateLayout(out, baseTriangles(domain)))
+  const LabelledSurface out = labelled(net, domain);
+  for (const std::string& problem : validateLayout(out, baseTriangles(domain)))
     ADD_FAILURE() << what << ": " << problem;
-  EXPECT_NEAR(test::totalArea(out), surfaceArea(surface), 1e-9 * surfaceArea(surface)) << what;
+  EXPECT_NEAR(totalArea(out), surfaceArea(surface), 1e-9 * surfaceArea(surface)) << what;
   EXPECT_EQ(net.curves.size(), static_cast<std::size_t>(edgeCount(domain.mesh)));
   return report;
 }
@@ -243,27 +243,27 @@ TEST(NetValidator, CatchesBrokenLayouts)
   const BaseDomain octahedron = octahedronDomain();
   TracedNet net;
   ASSERT_TRUE(traceFeatureNet(sphere, landmarksAt(sphere, octahedron.mesh.points), octahedron, net).ok());
-  const test::LabelledSurface good = labelled(net, octahedron);
-  const test::BaseTriangles base = baseTriangles(octahedron);
-  ASSERT_TRUE(test::validateLayout(good, base).empty());
+  const LabelledSurface good = labelled(net, octahedron);
+  const BaseTriangles base = baseTriangles(octahedron);
+  ASSERT_TRUE(validateLayout(good, base).empty());
 
-  test::LabelledSurface swapped = good; // two whole patches exchange labels
+  LabelledSurface swapped = good; // two whole patches exchange labels
   for (int& p : swapped.patchId)
     p = p == 0 ? 1 : p == 1 ? 0 : p;
-  EXPECT_FALSE(test::validateLayout(swapped, base).empty());
+  EXPECT_FALSE(validateLayout(swapped, base).empty());
 
-  test::LabelledSurface stray = good; // one triangle inside patch 0 claims patch 7
+  LabelledSurface stray = good; // one triangle inside patch 0 claims patch 7
   const auto inside = std::find(stray.patchId.begin(), stray.patchId.end(), 0) - stray.patchId.begin();
   stray.patchId[inside] = 7;
-  EXPECT_FALSE(test::validateLayout(stray, base).empty());
+  EXPECT_FALSE(validateLayout(stray, base).empty());
 
-  test::BaseTriangles mirrored = base; // the base domain with reversed orientation
+  BaseTriangles mirrored = base; // the base domain with reversed orientation
   for (auto& t : mirrored.triangles)
     std::swap(t[1], t[2]);
-  EXPECT_FALSE(test::validateLayout(good, mirrored).empty());
+  EXPECT_FALSE(validateLayout(good, mirrored).empty());
 
-  test::LabelledSurface merged = good; // patch 2 swallowed by patch 3: 3 is no longer a 3-landmark disk
+  LabelledSurface merged = good; // patch 2 swallowed by patch 3: 3 is no longer a 3-landmark disk
   for (int& p : merged.patchId)
     p = p == 2 ? 3 : p;
-  EXPECT_FALSE(test::validateLayout(merged, base).empty());
+  EXPECT_FALSE(validateLayout(merged, base).empty());
 }

@@ -1,11 +1,11 @@
-#include "NetValidator.h"
+#include "LayoutValidator.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 
-namespace cmp::test
+namespace cmp
 {
 namespace
 {
@@ -172,4 +172,4 @@ double totalArea(const LabelledSurface& surface)
   return area;
 }
 
-} // namespace cmp::test
+} // namespace cmp

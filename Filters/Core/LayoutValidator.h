@@ -1,14 +1,15 @@
 #pragma once
-/// \file NetValidator.h
+/// \file LayoutValidator.h
 /// \brief An independent check that a patch layout on a surface is
 ///        topologically equivalent to its base domain. It shares no code with
-///        the tracer: plain arrays in, a list of problems out.
+///        the tracer (plain arrays in, a list of problems out), so tests and
+///        users can trust it to judge the tracer's output.
 
 #include <array>
 #include <string>
 #include <vector>
 
-namespace cmp::test
+namespace cmp
 {
 
 /// \brief A labelled surface as the tracer outputs it.
@@ -37,4 +38,4 @@ std::vector<std::string> validateLayout(const LabelledSurface& surface, const Ba
 /// \brief Total area of the surface's triangles.
 double totalArea(const LabelledSurface& surface);
 
-} // namespace cmp::test
+} // namespace cmp

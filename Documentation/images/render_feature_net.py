@@ -1,0 +1,50 @@
+"""Renders Documentation/images/feature-net-MODEL.png: a SHREC'07 model with
+the patch layout traced by Feature Net Tracer, using L0 from model 381.
+
+Usage: pvpython render_feature_net.py PLUGIN.so DATA_DIR MODEL OUTPUT.png
+"""
+import sys
+
+from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
+
+plugin, data, model, output = sys.argv[1:5]
+LoadPlugin(plugin, ns=globals())
+
+
+def landmarked(name):
+    folder = data + "/shrec07-fourleg/"
+    reader = ConsistentMeshSurfaceReader(FileName=folder + name + ".off")
+    return LandmarksFromFile(Input=reader, LandmarkFile=folder + name + ".vts")
+
+
+base = BaseDomainBuilder(Input=landmarked("381"))
+tracer = FeatureNetTracer(Input=landmarked(model), BaseDomain=base)
+
+view = CreateView("RenderView")
+view.ViewSize = [1200, 700]
+view.OrientationAxesVisibility = 0
+view.Background = [1, 1, 1]
+try:
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+
+patches = Show(OutputPort(tracer, 0), view)
+ColorBy(patches, ("CELLS", "PatchId"))
+lut = GetColorTransferFunction("PatchId")
+lut.ApplyPreset("Rainbow Uniform", True)
+lut.RescaleTransferFunction(0, 37)
+patches.SetScalarBarVisibility(view, False)
+
+curves = Show(OutputPort(tracer, 1), view)
+curves.SetRepresentationType("Wireframe")
+curves.ColorArrayName = [None, ""]
+curves.AmbientColor = curves.DiffuseColor = [0.05, 0.05, 0.05]
+curves.LineWidth = 3
+
+view.CameraPosition = [0.6, -0.5, 3.0]
+view.CameraViewUp = [0, 1, 0]
+view.ResetCamera()
+GetActiveCamera().Zoom(1.6)
+SaveScreenshot(output, view, ImageResolution=[1200, 700])
+print("wrote", output)

@@ -1,0 +1,197 @@
+#include "vtkCMPFeatureNetTracer.h"
+
+#include "LayoutValidator.h"
+#include "NetTracer.h"
+#include "vtkCMPPolyDataBridge.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <unordered_map>
+
+vtkStandardNewMacro(vtkCMPFeatureNetTracer);
+
+vtkCMPFeatureNetTracer::vtkCMPFeatureNetTracer()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+int vtkCMPFeatureNetTracer::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+namespace
+{
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType size)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(size);
+  return array;
+}
+
+/// The refined surface with the input's arrays carried through and PatchId.
+vtkSmartPointer<vtkPolyData> refinedSurface(const cmp::TracedNet& net, vtkPolyData* input)
+{
+  const cmp::EditableMesh& mesh = net.mesh;
+  vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(mesh.toTriangleMesh());
+  const vtkIdType inputPoints = input->GetNumberOfPoints();
+  vtkPointData* points = surface->GetPointData();
+  points->CopyAllocate(input->GetPointData(), mesh.vertexCount());
+  points->SetNumberOfTuples(mesh.vertexCount()); // interpolation below reads and writes in place
+  for (vtkIdType v = 0; v < inputPoints; ++v)
+    points->CopyData(input->GetPointData(), v, v);
+  for (int v = static_cast<int>(inputPoints); v < mesh.vertexCount(); ++v)
+  {
+    const cmp::VertexOrigin& origin = mesh.origin(v);
+    points->InterpolateEdge(points, v, origin.a, origin.b, origin.t);
+  }
+  if (vtkDataArray* featureIds = points->GetArray(cmp::bridge::kFeatureIdArray))
+    for (vtkIdType v = inputPoints; v < mesh.vertexCount(); ++v)
+      featureIds->SetComponent(v, 0, -1);
+
+  vtkCellData* cells = surface->GetCellData();
+  cells->CopyAllocate(input->GetCellData(), mesh.triangleCount());
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    cells->CopyData(input->GetCellData(), mesh.inputTriangle(t), t);
+  auto patchIds = intArray("PatchId", mesh.triangleCount());
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    patchIds->SetValue(t, net.patchOfTriangle[t]);
+  cells->AddArray(patchIds);
+  return surface;
+}
+
+/// The net as polylines, one per base edge, on its own compact point set.
+vtkSmartPointer<vtkPolyData> curvePolylines(const cmp::TracedNet& net, const cmp::BaseDomain& domain)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  std::unordered_map<int, vtkIdType> pointOf;
+  const auto edges = static_cast<vtkIdType>(net.curves.size());
+  auto baseEdgeIds = intArray("BaseEdgeId", edges);
+  auto featureA = intArray("FeatureIdA", edges);
+  auto featureB = intArray("FeatureIdB", edges);
+  for (vtkIdType e = 0; e < edges; ++e)
+  {
+    const auto& curve = net.curves[e];
+    lines->InsertNextCell(static_cast<vtkIdType>(curve.size()));
+    for (int v : curve)
+    {
+      auto [it, inserted] = pointOf.emplace(v, points->GetNumberOfPoints());
+      if (inserted)
+        points->InsertNextPoint(net.mesh.point(v).data());
+      lines->InsertCellPoint(it->second);
+    }
+    baseEdgeIds->SetValue(e, static_cast<int>(e));
+    featureA->SetValue(e, domain.featureIds[net.baseEdges[e][0]]);
+    featureB->SetValue(e, domain.featureIds[net.baseEdges[e][1]]);
+  }
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(baseEdgeIds);
+  output->GetCellData()->AddArray(featureA);
+  output->GetCellData()->AddArray(featureB);
+  return output;
+}
+
+/// Runs the independent layout check on the output surface.
+bool layoutIsValid(const cmp::TracedNet& net, const cmp::BaseDomain& domain, std::string& problem)
+{
+  cmp::LabelledSurface surface;
+  const cmp::TriangleMesh mesh = net.mesh.toTriangleMesh();
+  surface.points.reserve(mesh.points.size());
+  for (const cmp::Vec3& p : mesh.points)
+    surface.points.push_back({ p.x(), p.y(), p.z() });
+  surface.triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
+  surface.patchId = net.patchOfTriangle;
+  surface.featureId.assign(mesh.points.size(), -1);
+  for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
+    surface.featureId[net.landmarkVertex[bv]] = domain.featureIds[bv];
+  cmp::BaseTriangles base;
+  for (const cmp::Triangle& t : domain.mesh.triangles)
+    base.triangles.push_back({ domain.featureIds[t[0]], domain.featureIds[t[1]], domain.featureIds[t[2]] });
+  const std::vector<std::string> problems = cmp::validateLayout(surface, base);
+  problem = problems.empty() ? "" : problems.front();
+  return problems.empty();
+}
+
+} // namespace
+
+int vtkCMPFeatureNetTracer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* baseInput = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* surfaceOutput = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* curvesOutput = vtkPolyData::GetData(outputVector, 1);
+  if (!baseInput)
+  {
+    vtkErrorMacro("no base domain: connect L0 (for example from Base Domain Builder) to the second input");
+    return 0;
+  }
+  cmp::TriangleMesh mesh;
+  cmp::LandmarkList landmarks;
+  cmp::BaseDomain domain;
+  cmp::Status status = cmp::bridge::toCheckedSurface(input, mesh);
+  if (status.ok())
+    status = cmp::bridge::readLandmarks(input, landmarks);
+  if (status.ok())
+    status = cmp::bridge::toBaseDomain(baseInput, domain, static_cast<int>(landmarks.size()));
+  cmp::TracedNet net;
+  cmp::NetTracerReport report;
+  if (status.ok())
+  {
+    cmp::NetTracerOptions options;
+    options.parameterizationWeight = this->ParameterizationWeight;
+    options.detectSwirls = this->DetectSwirls;
+    options.progress = [this](double fraction) { this->UpdateProgress(0.9 * fraction); };
+    status = cmp::traceFeatureNet(mesh, landmarks, domain, net, options, &report);
+  }
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< status.message());
+    return 0;
+  }
+  std::string problem;
+  const bool valid = layoutIsValid(net, domain, problem);
+  if (!valid)
+    vtkWarningMacro("the traced net failed the layout check: " << problem);
+  surfaceOutput->ShallowCopy(refinedSurface(net, input));
+  curvesOutput->ShallowCopy(curvePolylines(net, domain));
+  const double lengthPerSqrtArea = report.netLength / std::sqrt(cmp::surfaceArea(mesh));
+  for (vtkPolyData* output : { surfaceOutput, curvesOutput })
+  {
+    vtkFieldData* field = output->GetFieldData();
+    cmp::bridge::setFieldValue(field, "NetLength", report.netLength);
+    cmp::bridge::setFieldValue(field, "NetLengthPerSqrtArea", lengthPerSqrtArea);
+    cmp::bridge::setFieldValue(field, "NetValid", valid ? 1 : 0);
+    cmp::bridge::setFieldValue(field, "RetracedCurves", report.retraced);
+    cmp::bridge::setFieldValue(field, "PenalisedCurves", report.penalised);
+    cmp::bridge::setFieldValue(field, "SplitEdges", report.splitEdges);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkCMPFeatureNetTracer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParameterizationWeight: " << this->ParameterizationWeight << "\n";
+  os << indent << "DetectSwirls: " << this->DetectSwirls << "\n";
+}
