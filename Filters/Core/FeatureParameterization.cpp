@@ -64,15 +64,19 @@ Status computeFeatureCoordinates(const TriangleMesh& mesh, const LandmarkList& l
       }
     }
   }
-  Eigen::SparseMatrix<double> system(unknowns, unknowns);
-  system.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-  solver.compute(system);
-  if (solver.info() != Eigen::Success)
-    return Status::error("the harmonic parameterization could not be factorized (degenerate geometry?)");
-  const Eigen::MatrixXd solution = solver.solve(rhs);
-  if (solver.info() != Eigen::Success || !solution.allFinite())
-    return Status::error("the harmonic parameterization could not be solved");
+  Eigen::MatrixXd solution;
+  if (unknowns > 0) // every vertex may be a landmark; Eigen's SparseLU divides by zero on an empty system
+  {
+    Eigen::SparseMatrix<double> system(unknowns, unknowns);
+    system.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+    solver.compute(system);
+    if (solver.info() != Eigen::Success)
+      return Status::error("the harmonic parameterization could not be factorized (degenerate geometry?)");
+    solution = solver.solve(rhs);
+    if (solver.info() != Eigen::Success || !solution.allFinite())
+      return Status::error("the harmonic parameterization could not be solved");
+  }
 
   out.featureCount = featureCount;
   out.values.assign(static_cast<std::size_t>(n) * featureCount, 0.0);

@@ -173,6 +173,14 @@ TEST(NetTracer, PureShortestPathsAreValidToo)
   expectValidNet(sphere, landmarksAt(sphere, octahedron.mesh.points), octahedron, "shortest", options);
 }
 
+TEST(NetTracer, EveryVertexALandmark)
+{
+  // No free vertex at all: the harmonic system is empty and every curve
+  // needs a split edge to exist.
+  const BaseDomain octahedron = octahedronDomain();
+  expectValidNet(octahedron.mesh, { 0, 1, 2, 3, 4, 5 }, octahedron, "octahedron on itself");
+}
+
 TEST(NetTracer, RefusesBadInput)
 {
   const TriangleMesh sphere = test::sphere(3);
