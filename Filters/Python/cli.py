@@ -1,6 +1,9 @@
 """consistent-remesh: run the consistent-parameterization pipeline on a
 collection of landmarked surfaces and write the results and a JSON report.
 
+Stages per model: read, landmarks, check, check against the base domain,
+trace the patch layout (NAME.net.vtp, NAME.curves.vtp).
+
 Usage:
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
                     [--base-domain L0.vtp | --base-domain-from N] --output DIR
@@ -66,6 +69,7 @@ class Model:
         self.landmark_path = landmark_path
         self.name = os.path.splitext(os.path.basename(mesh_path))[0]
         self.surface = None
+        self.net = None
         self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
 
     def timed(self, stage, function, *args):
@@ -134,6 +138,32 @@ def check_against_base_domain(model, domain):
     check.SetInputData(0, model.surface)
     check.SetInputData(1, domain)
     model.timed("base_domain_check", _run, check)
+
+
+def trace_net(model, domain, output_folder):
+    """FeatureNetTracer: writes NAME.net.vtp (the refined surface with
+    PatchId) and NAME.curves.vtp (one polyline per base-domain edge)."""
+    tracer = cmp.vtkCMPFeatureNetTracer()
+    tracer.SetInputData(0, model.surface)
+    tracer.SetInputData(1, domain)
+    surface = model.timed("trace", _run, tracer)
+    curves = tracer.GetOutputDataObject(1)
+    write_polydata(surface, os.path.join(output_folder, model.name + ".net.vtp"))
+    write_polydata(curves, os.path.join(output_folder, model.name + ".curves.vtp"))
+    field = surface.GetFieldData()
+    value = lambda name: field.GetArray(name).GetValue(0)
+    model.report["net"] = {
+        "length": round(value("NetLength"), 6),
+        "length_per_sqrt_area": round(value("NetLengthPerSqrtArea"), 4),
+        "valid": bool(value("NetValid")),
+        "retraced_curves": int(value("RetracedCurves")),
+        "penalised_curves": int(value("PenalisedCurves")),
+        "split_edges": int(value("SplitEdges")),
+        "vertices": surface.GetNumberOfPoints(),
+    }
+    if not model.report["net"]["valid"]:
+        raise StageError("the traced net failed the layout check")
+    model.net = surface
 
 
 def describe_base_domain(domain, source):
@@ -239,6 +269,8 @@ def main(argv=None):
             continue
         try:
             check_against_base_domain(model, domain)
+            print("%s: tracing the net" % model.name, flush=True)
+            trace_net(model, domain, args.output)
             model.report["status"] = "ok"
         except StageError as error:
             model.fail(error)
@@ -264,9 +296,10 @@ def print_summary(models, report):
         print("base domain: %d vertices, %d triangles, %d edges (%s)"
               % (domain["vertices"], domain["triangles"], domain["edges"], domain["source"]))
     width = max(len(m.name) for m in models)
-    print("%-*s  %8s  %8s  %s" % (width, "model", "vertices", "seconds", "result"))
+    print("%-*s  %8s  %8s  %10s  %s" % (width, "model", "vertices", "seconds", "net/sqrt(A)", "result"))
     for model in models:
         r = model.report
         seconds = sum(r["seconds"].values())
         result = "ok" if r.get("status") == "ok" else "FAILED: " + r.get("error", "")
-        print("%-*s  %8s  %8.3f  %s" % (width, model.name, r.get("vertices", "-"), seconds, result))
+        net = r.get("net", {}).get("length_per_sqrt_area", "-")
+        print("%-*s  %8s  %8.3f  %10s  %s" % (width, model.name, r.get("vertices", "-"), seconds, net, result))

@@ -164,6 +164,20 @@ def case_collection(tmp):
         check(max(abs(a - b) for a, b in zip(domain.GetPoint(p), expected)) < 1e-12,
               "base_domain.vtp point %d is not Spot's landmark %d" % (p, f))
 
+    # The tracer stage: a valid net per model, its files and its figures.
+    for mesh, _ in pairs:
+        name = os.path.splitext(os.path.basename(mesh))[0]
+        net = report["models"][name]["net"]
+        check(net["valid"] is True, name + ": net not valid")
+        check(10.0 < net["length_per_sqrt_area"] < 24.0, name + ": net length %s" % net["length_per_sqrt_area"])
+        check(net["vertices"] >= report["models"][name]["vertices"], name + ": refined surface lost points")
+        check("trace" in report["models"][name]["seconds"], name + ": no trace time")
+        surface = read_vtp(os.path.join(out, name + ".net.vtp"))
+        patches = surface.GetCellData().GetArray("PatchId")
+        check(patches is not None and patches.GetRange() == (0.0, 37.0), name + ": PatchId range")
+        curves = read_vtp(os.path.join(out, name + ".curves.vtp"))
+        check_equal(curves.GetNumberOfLines(), 57, name + ": curves")
+
 
 def case_given_base_domain(tmp):
     """--base-domain with the published layout, as VTP and as OBJ."""
@@ -309,6 +323,8 @@ def case_shipped_examples(tmp):
         check_equal(report["models"][name]["landmark_count"], 6, name + " landmarks")
     domain = report["base_domain"]
     check_equal((domain["vertices"], domain["triangles"], domain["edges"]), (6, 8, 12), "octahedral base domain")
+    for name in ("blob", "capsule", "peanut"):
+        check(report["models"][name]["net"]["valid"] is True, name + ": net not valid")
 
 
 CASES = {
