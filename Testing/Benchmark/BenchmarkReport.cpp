@@ -3,6 +3,7 @@
 #include <sys/utsname.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -158,6 +159,59 @@ std::string memoryTable(const std::vector<ModelResult>& results)
   return table;
 }
 
+/// \brief Every figure name of any model, in the order first seen.
+std::vector<std::string> figureNames(const std::vector<ModelResult>& results)
+{
+  FigureList all;
+  for (const ModelResult& result : results)
+  {
+    for (const Figure& figure : result.figures)
+      setFigure(all, figure.name, 0.0);
+  }
+  std::vector<std::string> names;
+  for (const Figure& figure : all)
+    names.push_back(figure.name);
+  return names;
+}
+
+const Figure* findFigure(const ModelResult& result, const std::string& name)
+{
+  for (const Figure& figure : result.figures)
+  {
+    if (figure.name == name)
+      return &figure;
+  }
+  return nullptr;
+}
+
+/// \brief A figure for the table: counts as integers, the rest with three
+///        decimals.
+std::string figureCell(const Figure* figure)
+{
+  if (!figure)
+    return "-";
+  const double value = figure->value;
+  return format(value == std::floor(value) && std::abs(value) < 1e15 ? "%.0f" : "%.3f", value);
+}
+
+std::string figureTable(const std::vector<ModelResult>& results)
+{
+  const std::vector<std::string> names = figureNames(results);
+  if (names.empty())
+    return "No stage reported figures.\n";
+  std::vector<std::string> columns = { "model" };
+  columns.insert(columns.end(), names.begin(), names.end());
+  std::string table = tableHeader(columns, 1);
+  for (const ModelResult& result : results)
+  {
+    std::vector<std::string> cells = { result.model };
+    for (const std::string& name : names)
+      cells.push_back(figureCell(findFigure(result, name)));
+    table += tableRow(cells);
+  }
+  return table;
+}
+
 std::string failures(const std::vector<ModelResult>& results)
 {
   std::string text;
@@ -225,20 +279,32 @@ const char* stateName(StageState state)
 std::string markdownReport(const std::vector<ModelResult>& results, const RunInfo& info)
 {
   return header(results, info) + "\n## Time per stage (s)\n\n" + timeTable(results) +
-    "\n## Peak memory per stage (MB)\n\n" + memoryTable(results) + failures(results);
+    "\n## Peak memory per stage (MB)\n\n" + memoryTable(results) + "\n## Figures per model\n\n" +
+    figureTable(results) + failures(results);
 }
 
 std::string csvReport(const std::vector<ModelResult>& results)
 {
-  std::string text = "model,vertices,triangles,stage,status,seconds,runs,stage_peak_mb,process_peak_mb\n";
+  const std::vector<std::string> names = figureNames(results);
+  std::string text = "model,vertices,triangles,stage,status,seconds,runs,stage_peak_mb,process_peak_mb";
+  for (const std::string& name : names)
+    text += "," + csvField(name);
+  text += "\n";
   for (const ModelResult& result : results)
   {
+    // The model's figures, the same on each of its rows.
+    std::string figures;
+    for (const std::string& name : names)
+    {
+      const Figure* figure = findFigure(result, name);
+      figures += "," + (figure ? format("%.17g", figure->value) : std::string());
+    }
     for (const StageResult& stage : result.stages)
     {
       text += csvField(result.model) + "," + std::to_string(result.vertices) + "," +
         std::to_string(result.triangles) + "," + csvField(stage.stage) + "," + stateName(stage.state) + "," +
         format("%.6f", stage.seconds) + "," + std::to_string(stage.runs) + "," + format("%.1f", stage.peakMB) +
-        "," + format("%.1f", result.peakMB) + "\n";
+        "," + format("%.1f", result.peakMB) + figures + "\n";
     }
   }
   return text;

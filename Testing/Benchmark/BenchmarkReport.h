@@ -1,6 +1,17 @@
 #pragma once
 /// \file BenchmarkReport.h
-/// \brief The benchmark's results as a Markdown table and a CSV file.
+/// \brief The benchmark's results as Markdown tables and a CSV file.
+///
+/// Markdown: run facts, then "Time per stage (s)", "Peak memory per stage
+/// (MB)" and "Figures per model" (one row per model, one column per figure
+/// name in the order the names first appear; `-` where a model has none).
+///
+/// CSV: one row per model and stage, with the fixed columns
+/// `model,vertices,triangles,stage,status,seconds,runs,stage_peak_mb,process_peak_mb`
+/// followed by one column per figure name (same order as the Markdown).
+/// Like `process_peak_mb`, figures belong to the model and repeat on each of
+/// its rows; a cell is empty where the model has no such figure. Values are
+/// written with full precision.
 
 #include "BenchmarkRunner.h"
 
@@ -20,11 +31,12 @@ struct RunInfo
 };
 
 /// \brief The Markdown report: run facts, a time table (one row per model,
-///        one column per stage) and a peak-memory table.
+///        one column per stage), a peak-memory table and a figures table.
 std::string markdownReport(const std::vector<ModelResult>& results, const RunInfo& info);
 
 /// \brief One CSV row per model and stage:
-///        `model,vertices,triangles,stage,status,seconds,runs,stage_peak_mb,process_peak_mb`.
+///        `model,vertices,triangles,stage,status,seconds,runs,stage_peak_mb,process_peak_mb`
+///        then one column per figure name (see the file comment).
 std::string csvReport(const std::vector<ModelResult>& results);
 
 /// \brief Writes `text` to `path`, creating its folder; false on failure.

@@ -58,6 +58,7 @@ double toMB(long kB)
 //   start <rss kB> <1 if per-stage peaks>
 //   size <vertices> <triangles>
 //   done <stage> <seconds> <runs> <peak kB>
+//   figure <name> <value>          (after `done`, every figure set so far)
 //   na <stage>
 //   failed <stage> <seconds> <peak kB> <message>
 //   fatal <message>
@@ -83,6 +84,26 @@ std::string joinTabs(std::initializer_list<std::string> fields)
   return line;
 }
 
+/// \brief `text` with tabs and newlines (the protocol's separators) as spaces.
+std::string oneField(std::string text)
+{
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\t'; }, ' ');
+  return text;
+}
+
+/// \brief Sends every figure set so far. Resending earlier stages' figures
+///        is harmless (the parent replaces by name) and keeps the child free
+///        of bookkeeping about what it already sent.
+void sendFigures(int fd, const FigureList& figures)
+{
+  for (const Figure& figure : figures)
+  {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.17g", figure.value); // round-trips a double
+    sendLine(fd, joinTabs({ "figure", oneField(figure.name), value }));
+  }
+}
+
 /// \brief Runs one stage `repetitions` times (stopping at the first error)
 ///        and reports its best time and peak memory.
 bool timeStage(int fd, const Stage& stage, ModelContext& ctx, int repetitions)
@@ -104,17 +125,16 @@ bool timeStage(int fd, const Stage& stage, ModelContext& ctx, int repetitions)
                           std::to_string(ctx.surface().triangleCount()) }));
   if (!status.ok())
   {
-    std::string message = status.message();
-    // The line protocol splits on tabs and newlines.
-    std::replace_if(message.begin(), message.end(), [](char c) { return c == '\n' || c == '\t'; }, ' ');
-    sendLine(fd, joinTabs({ "failed", stage.name, std::to_string(best), peak, message }));
+    sendLine(fd, joinTabs({ "failed", stage.name, std::to_string(best), peak, oneField(status.message()) }));
     return false;
   }
   sendLine(fd, joinTabs({ "done", stage.name, std::to_string(best), std::to_string(runs), peak }));
+  sendFigures(fd, ctx.figures);
   return true;
 }
 
-[[noreturn]] void childMain(int fd, const ModelSpec& spec, const std::vector<Stage>& stages, int repetitions)
+[[noreturn]] void childMain(
+  int fd, const ModelSpec& spec, const SharedInputs& shared, const std::vector<Stage>& stages, int repetitions)
 {
   int exitCode = 0;
   try
@@ -123,6 +143,7 @@ bool timeStage(int fd, const Stage& stage, ModelContext& ctx, int repetitions)
     sendLine(fd, joinTabs({ "start", std::to_string(statusFieldKB("VmRSS:")), perStage ? "1" : "0" }));
     ModelContext ctx;
     ctx.spec = spec;
+    ctx.shared = &shared;
     for (const Stage& stage : stages)
     {
       if (!stageApplies(stage, spec))
@@ -192,6 +213,8 @@ std::string applyLine(ModelResult& result, const std::string& line)
     result.vertices = std::atoi(f[1].c_str());
     result.triangles = std::atoi(f[2].c_str());
   }
+  else if (f[0] == "figure" && f.size() >= 3)
+    setFigure(result.figures, f[1], std::atof(f[2].c_str()));
   else if (f[0] == "fatal" && f.size() >= 2)
     result.error = "exception: " + f[1];
   else if (StageResult* stage = f.size() >= 2 ? findStage(result, f[1]) : nullptr)
@@ -269,8 +292,8 @@ double ModelResult::totalSeconds() const
   return total;
 }
 
-ModelResult runModel(const ModelSpec& spec, const std::vector<Stage>& stages, int repetitions,
-  const ProgressFunction& progress)
+ModelResult runModel(const ModelSpec& spec, const SharedInputs& shared, const std::vector<Stage>& stages,
+  int repetitions, const ProgressFunction& progress)
 {
   ModelResult result;
   result.model = spec.name;
@@ -288,7 +311,7 @@ ModelResult runModel(const ModelSpec& spec, const std::vector<Stage>& stages, in
   if (pid == 0)
   {
     ::close(fds[0]);
-    childMain(fds[1], spec, stages, std::max(1, repetitions));
+    childMain(fds[1], spec, shared, stages, std::max(1, repetitions));
   }
   ::close(fds[1]);
   if (pid < 0)

@@ -38,6 +38,7 @@ struct ModelResult
   int vertices = 0;                ///< Vertices of the surface the stages worked on.
   int triangles = 0;               ///< Triangles of that surface.
   std::vector<StageResult> stages; ///< One per pipeline stage, in order.
+  FigureList figures;              ///< What the stages that finished reported, in first-set order.
   double startMB = 0.0;            ///< Resident memory of the child before its first stage.
   double peakMB = 0.0;             ///< Peak resident memory of the child process.
   bool perStagePeaks = false;      ///< True if each stage's peak was measured on its own
@@ -54,12 +55,13 @@ struct ModelResult
 using ProgressFunction = std::function<void(const std::string&)>;
 
 /// \brief Runs `stages` on `spec` in a forked child process and collects
-///        their best-of-`repetitions` times and peak memory.
+///        their best-of-`repetitions` times, peak memory and figures.
 ///
 /// A child per model means each model's peak memory is its own (not the
 /// high-water mark of the models before it), and a crash or an
-/// out-of-memory kill ends one row instead of the benchmark.
-ModelResult runModel(const ModelSpec& spec, const std::vector<Stage>& stages, int repetitions,
-  const ProgressFunction& progress = {});
+/// out-of-memory kill ends one row instead of the benchmark. The child
+/// reads `shared` from its copy of the parent's memory.
+ModelResult runModel(const ModelSpec& spec, const SharedInputs& shared, const std::vector<Stage>& stages,
+  int repetitions, const ProgressFunction& progress = {});
 
 } // namespace cmp::bench

@@ -2,6 +2,8 @@
 
 #include "Subdivision.h"
 
+#include <cmath>
+
 namespace cmp::bench
 {
 namespace
@@ -52,6 +54,26 @@ Status baseDomainStage(ModelContext& ctx)
   return buildBaseDomain(ctx.surface(), ctx.landmarks, ctx.domain, {}, &ctx.domainReport);
 }
 
+/// \brief `trace`: trace the feature net against the shared L0 (the issue's
+///        figures are "with L0 from model 381"), or against the model's own
+///        L0 when there is no shared one. Landmark ids stay valid on the
+///        subdivided surface because subdivision keeps original vertex ids.
+Status traceStage(ModelContext& ctx)
+{
+  ctx.net = TracedNet{};
+  ctx.netReport = NetTracerReport{};
+  const Status status = traceFeatureNet(ctx.surface(), ctx.landmarks, ctx.traceDomain(), ctx.net, {}, &ctx.netReport);
+  if (!status.ok())
+    return status;
+  // Dividing by sqrt(area) makes the length independent of the model's
+  // scale, so models (and the published 15.9-36.9 range) compare directly.
+  setFigure(ctx.figures, "net_length_per_sqrt_area", ctx.netReport.netLength / std::sqrt(surfaceArea(ctx.surface())));
+  setFigure(ctx.figures, "retraced", ctx.netReport.retraced);
+  setFigure(ctx.figures, "penalised", ctx.netReport.penalised);
+  setFigure(ctx.figures, "split_edges", ctx.netReport.splitEdges);
+  return status;
+}
+
 bool isSubdivided(const ModelSpec& spec)
 {
   return spec.subdivisionLevels > 0;
@@ -62,13 +84,14 @@ bool isSubdivided(const ModelSpec& spec)
 const std::vector<Stage>& pipelineStages()
 {
   // Pipeline order. A later stage appends one line here, e.g.
-  //   { "tracer", traceStage },
+  //   { "straighten", straightenStage, {} },
   static const std::vector<Stage> stages = {
     { "read", readStage, {} },
     { "subdivide", subdivideStage, isSubdivided },
     { "check", checkStage, {} },
     { "landmarks", landmarksStage, {} },
     { "base_domain", baseDomainStage, {} },
+    { "trace", traceStage, {} },
   };
   return stages;
 }
@@ -76,6 +99,38 @@ const std::vector<Stage>& pipelineStages()
 bool stageApplies(const Stage& stage, const ModelSpec& spec)
 {
   return !stage.appliesTo || stage.appliesTo(spec);
+}
+
+void setFigure(FigureList& figures, const std::string& name, double value)
+{
+  for (Figure& figure : figures)
+  {
+    if (figure.name == name)
+    {
+      figure.value = value;
+      return;
+    }
+  }
+  figures.push_back({ name, value });
+}
+
+Status buildModelBaseDomain(const ModelSpec& spec, BaseDomain& domain)
+{
+  ModelContext ctx;
+  ctx.spec = spec;
+  for (const Stage& stage : pipelineStages())
+  {
+    if (!stageApplies(stage, spec))
+      continue;
+    if (Status status = stage.run(ctx); !status.ok())
+      return Status::error(stage.name + ": " + status.message());
+    if (stage.name == "base_domain")
+    {
+      domain = std::move(ctx.domain);
+      return {};
+    }
+  }
+  return Status::error("the pipeline has no base_domain stage");
 }
 
 } // namespace cmp::bench

@@ -3,21 +3,25 @@
 /// \brief The pipeline stages the benchmark times, and the per-model context
 ///        they read from and write to.
 ///
-/// To time a new stage (tracer, straightener, remesher, PCA, ...):
+/// To time a new stage (straightener, remesher, PCA, ...):
 ///  1. add the fields it produces to `ModelContext`;
 ///  2. append one `Stage` to the list in `pipelineStages()`
-///     (BenchmarkStages.cpp).
-/// The runner, the Markdown table and the CSV pick it up from that list.
+///     (BenchmarkStages.cpp);
+///  3. if it yields per-model numbers worth a column (a length, a count, an
+///     error), `setFigure(ctx.figures, "name", value)` them in the stage.
+/// The runner, the Markdown tables and the CSV pick both up by themselves.
 
 #include "BaseDomain.h"
 #include "BaseDomainBuilder.h"
 #include "Landmarks.h"
 #include "MeshFile.h"
+#include "NetTracer.h"
 #include "Status.h"
 #include "SurfaceCheck.h"
 #include "TriangleMesh.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +37,36 @@ struct ModelSpec
   int subdivisionLevels = 0;  ///< Midpoint subdivisions after reading (0 = none).
 };
 
+/// \brief One named per-model number a stage produces (a net length, a
+///        count, ...), reported in the "Figures per model" table.
+struct Figure
+{
+  std::string name;   ///< Column name (lower case, no spaces, no tabs).
+  double value = 0.0; ///< Its value for the model.
+};
+
+/// \brief A model's figures, in the order they were first set.
+using FigureList = std::vector<Figure>;
+
+/// \brief Sets figure `name` to `value`: replaces an earlier value of that
+///        name (a repeated stage sets its figures again), else appends it.
+void setFigure(FigureList& figures, const std::string& name, double value);
+
+/// \brief Inputs every model shares, built once in the parent process before
+///        any model's child is forked.
+///
+/// Each child sees them through fork's copy, so building them is neither
+/// timed nor counted in any model's peak memory.
+struct SharedInputs
+{
+  /// \brief The common base domain L0 that `trace` uses for every model;
+  ///        empty when it could not be built (then `trace` falls back to the
+  ///        model's own `base_domain`).
+  std::optional<BaseDomain> domain;
+  /// \brief Name of the model L0 was built from (e.g. "381").
+  std::string domainModel;
+};
+
 /// \brief Everything the stages of one model produce, in pipeline order.
 ///
 /// Lives in the model's own child process, so nothing here leaks into the
@@ -40,19 +74,30 @@ struct ModelSpec
 struct ModelContext
 {
   ModelSpec spec;                         ///< Input files.
+  const SharedInputs* shared = nullptr;   ///< Inputs common to all models (not owned).
   MeshFileData file;                      ///< `read`: the welded file mesh.
   TriangleMesh subdivided;                ///< `subdivide`: the refined mesh (large model only).
   SurfaceCheckResult surfaceCheck;        ///< `check`: the surface's first defect, if any.
   LandmarkList landmarks;                 ///< `landmarks`: landmark vertex per feature.
   BaseDomain domain;                      ///< `base_domain`: L0.
   BaseDomainBuilderReport domainReport;   ///< `base_domain`: collapses, shape quality.
-  // Later stages add their outputs here (patch nets, parameterization, ...).
+  TracedNet net;                          ///< `trace`: the net on the refined surface.
+  NetTracerReport netReport;              ///< `trace`: length, retraces, splits.
+  // Later stages add their outputs here (straightened net, parameterization, ...).
+  FigureList figures;                     ///< Per-model numbers the stages report.
 
   /// \brief The surface every stage after `read` works on: the subdivided
   ///        mesh when there is one, else the file's mesh.
   const TriangleMesh& surface() const
   {
     return spec.subdivisionLevels > 0 ? subdivided : file.mesh;
+  }
+
+  /// \brief The base domain to trace against: the shared L0 when there is
+  ///        one, else this model's own `base_domain` output.
+  const BaseDomain& traceDomain() const
+  {
+    return shared && shared->domain ? *shared->domain : domain;
   }
 };
 
@@ -74,5 +119,12 @@ const std::vector<Stage>& pipelineStages();
 
 /// \brief True if `stage` runs for `spec`.
 bool stageApplies(const Stage& stage, const ModelSpec& spec);
+
+/// \brief Builds `spec`'s base domain in the calling process by running the
+///        pipeline's stages up to and including `base_domain`, untimed.
+///
+/// Used for the shared L0; running the same stages as the benchmark means L0
+/// is exactly the `base_domain` output of that model's own row.
+Status buildModelBaseDomain(const ModelSpec& spec, BaseDomain& domain);
 
 } // namespace cmp::bench

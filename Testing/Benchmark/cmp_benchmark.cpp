@@ -14,6 +14,9 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#if defined(__GLIBC__) // defined by the C++ headers above
+#include <malloc.h>    // malloc_trim
+#endif
 
 #ifndef CMP_SHARED_DATA_DIR
 #define CMP_SHARED_DATA_DIR ""
@@ -23,6 +26,10 @@ namespace
 {
 
 using namespace cmp::bench;
+
+/// \brief The model whose L0 every net is traced against: the issue asks for
+///        the figures "with L0 from model 381".
+const char* const sharedDomainModel = "381";
 
 /// \brief Command-line settings.
 struct Options
@@ -42,7 +49,10 @@ const char* const usage =
 
 Times each stage of the core pipeline on every landmarked model of the shared
 data folder and on one model midpoint-subdivided to >= --min-triangles, each
-model in its own process, and writes a Markdown table (plus a CSV beside it).
+model in its own process, and writes Markdown tables (time, memory, and the
+stages' figures such as the net length per sqrt(area)) plus a CSV beside them.
+`trace` uses one L0 built from model 381 before any model runs (untimed); if
+381 is not in the data, each model is traced against its own L0.
 
   --data DIR            shared data folder (default: the configured CMP_SHARED_DATA_DIR)
   --output FILE         Markdown file to write (default: benchmark-results.md);
@@ -137,18 +147,64 @@ bool largeWanted(const Options& options, const std::vector<ModelSpec>& models)
 }
 
 /// \brief Runs one model, reporting progress on stderr.
-ModelResult runAndReport(const ModelSpec& spec, const std::vector<Stage>& stages, int repetitions)
+ModelResult runAndReport(
+  const ModelSpec& spec, const SharedInputs& shared, const std::vector<Stage>& stages, int repetitions)
 {
   std::cerr << "cmp_benchmark: " << spec.name << " (" << spec.meshPath
             << (spec.subdivisionLevels ? ", " + std::to_string(spec.subdivisionLevels) + " subdivisions" : "")
             << ")\n";
-  return runModel(spec, stages, repetitions, [](const std::string& line) { std::cerr << "  " << line << "\n"; });
+  return runModel(
+    spec, shared, stages, repetitions, [](const std::string& line) { std::cerr << "  " << line << "\n"; });
+}
+
+/// \brief Builds the shared L0 from `sharedDomainModel`, in this process so
+///        that every child gets it through fork, and says in `notes` which
+///        L0 `trace` used.
+SharedInputs buildSharedInputs(const std::vector<ModelSpec>& models, std::vector<std::string>& notes)
+{
+  SharedInputs shared;
+  const auto spec = std::find_if(
+    models.begin(), models.end(), [](const ModelSpec& m) { return m.name == sharedDomainModel; });
+  std::string reason = std::string("model ") + sharedDomainModel + " is not in the data";
+  if (spec != models.end())
+  {
+    std::cerr << "cmp_benchmark: building the shared L0 from " << spec->meshPath << "\n";
+    cmp::BaseDomain domain;
+    const cmp::Status status = buildModelBaseDomain(*spec, domain);
+    if (status.ok())
+    {
+      shared.domainModel = spec->name;
+      notes.push_back("trace: every net is traced against one L0 built from model " + spec->name + " (" +
+        std::to_string(domain.mesh.vertexCount()) + " vertices, " + std::to_string(domain.mesh.triangleCount()) +
+        " triangles) before the models ran; building it is not timed and not in any model's memory");
+      shared.domain = std::move(domain);
+    }
+    else
+      reason = "L0 from model " + spec->name + " failed: " + status.message();
+  }
+  if (!shared.domain)
+    notes.push_back("trace: " + reason + "; **each model is traced against its own base_domain**, "
+      "so the figures are not the issue's \"with L0 from model " + sharedDomainModel + "\"");
+#if defined(__GLIBC__)
+  // Hand the decimation's freed heap back to the system: a child inherits
+  // the parent's resident pages, and they would inflate every `start`.
+  ::malloc_trim(0);
+#endif
+  return shared;
+}
+
+/// \brief Says what the figures of the `trace` stage mean.
+std::string traceFiguresNote()
+{
+  return "figures of `trace`: net_length_per_sqrt_area = total curve length / sqrt(surface area); retraced = "
+         "tentative curves found invalid and traced again; penalised = curves postponed by the swirl "
+         "detector; split_edges = mesh edges split to make room between curves";
 }
 
 /// \brief Triangle count of `spec`'s file, from a result already measured or
 ///        else by running only the `read` stage in a child process; 0 for a
 ///        model that failed (its refinement would fail the same way).
-int triangleCount(const ModelSpec& spec, const std::vector<ModelResult>& results)
+int triangleCount(const ModelSpec& spec, const SharedInputs& shared, const std::vector<ModelResult>& results)
 {
   for (const ModelResult& result : results)
   {
@@ -161,15 +217,15 @@ int triangleCount(const ModelSpec& spec, const std::vector<ModelResult>& results
     if (stage.name == "read")
       readOnly.push_back(stage);
   }
-  return runModel(spec, readOnly, 1).triangles;
+  return runModel(spec, shared, readOnly, 1).triangles;
 }
 
-std::optional<ModelSpec> largeModel(
-  const std::vector<ModelSpec>& models, const std::vector<ModelResult>& results, long minTriangles)
+std::optional<ModelSpec> largeModel(const std::vector<ModelSpec>& models, const SharedInputs& shared,
+  const std::vector<ModelResult>& results, long minTriangles)
 {
   std::vector<int> counts;
   for (const ModelSpec& spec : models)
-    counts.push_back(triangleCount(spec, results));
+    counts.push_back(triangleCount(spec, shared, results));
   return chooseLargeModel(models, counts, minTriangles);
 }
 
@@ -231,14 +287,17 @@ int run(const Options& options)
   for (const std::string& reason : skipped)
     info.notes.push_back("not benchmarked: " + reason);
 
+  const SharedInputs shared = options.listOnly ? SharedInputs{} : buildSharedInputs(models, info.notes);
+  info.notes.push_back(traceFiguresNote());
+
   std::vector<ModelResult> results;
   for (const ModelSpec& spec : models)
   {
     if (selected(options, spec.name) && !options.listOnly)
-      results.push_back(runAndReport(spec, pipelineStages(), options.repetitions));
+      results.push_back(runAndReport(spec, shared, pipelineStages(), options.repetitions));
   }
   const std::optional<ModelSpec> large =
-    largeWanted(options, models) ? largeModel(models, results, options.minTriangles) : std::nullopt;
+    largeWanted(options, models) ? largeModel(models, shared, results, options.minTriangles) : std::nullopt;
   if (options.listOnly)
   {
     listModels(models, large);
@@ -246,7 +305,7 @@ int run(const Options& options)
   }
   if (large && (selected(options, large->name) || contains(options.only, "large")))
   {
-    results.push_back(runAndReport(*large, pipelineStages(), options.largeRepetitions));
+    results.push_back(runAndReport(*large, shared, pipelineStages(), options.largeRepetitions));
     info.notes.push_back(largeNote(*large, results, options.minTriangles));
   }
   if (results.empty())
