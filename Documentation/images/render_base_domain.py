@@ -6,6 +6,7 @@ Usage: pvpython render_base_domain.py PLUGIN.so DATA_DIR OUTPUT.png
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
+from render_common import white_view
 
 plugin, data, output = sys.argv[1:4]
 LoadPlugin(plugin, ns=globals())
@@ -14,14 +15,7 @@ surface = ConsistentMeshSurfaceReader(FileName=data + "/shrec07-fourleg/381.off"
 landmarked = LandmarksFromFile(Input=surface, LandmarkFile=data + "/shrec07-fourleg/381.vts")
 base = BaseDomainBuilder(Input=landmarked)
 
-view = CreateView("RenderView")
-view.ViewSize = [1200, 600]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = white_view(1200, 600)
 
 shown = Show(surface, view)
 shown.DiffuseColor = [0.8, 0.8, 0.82]

@@ -6,6 +6,7 @@ Usage: pvpython render_feature_net.py PLUGIN.so DATA_DIR MODEL OUTPUT.png
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
+from render_common import white_view
 
 plugin, data, model, output = sys.argv[1:5]
 LoadPlugin(plugin, ns=globals())
@@ -20,14 +21,7 @@ def landmarked(name):
 base = BaseDomainBuilder(Input=landmarked("381"))
 tracer = FeatureNetTracer(Input=landmarked(model), BaseDomain=base)
 
-view = CreateView("RenderView")
-view.ViewSize = [1200, 700]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = white_view(1200, 700)
 
 patches = Show(OutputPort(tracer, 0), view)
 ColorBy(patches, ("CELLS", "PatchId"))

@@ -7,6 +7,8 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <gtest/gtest.h>
@@ -42,6 +44,16 @@ std::string octahedronOFF(bool open)
   if (!open)
     text += "3 0 3 5\n";
   return text;
+}
+
+void setFeatureIds(vtkPolyData* surface, std::vector<int> ids)
+{
+  vtkNew<vtkIntArray> array;
+  array->SetName("FeatureId");
+  ids.resize(surface->GetNumberOfPoints(), -1);
+  for (int id : ids)
+    array->InsertNextValue(id);
+  surface->GetPointData()->AddArray(array);
 }
 
 vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::string& landmarks)

@@ -8,6 +8,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <vector>
 
 class vtkAlgorithm;
 class vtkPolyData;
@@ -27,6 +28,9 @@ RunResult run(vtkAlgorithm* algorithm);
 
 /// \brief OFF text of a regular octahedron, optionally without its last triangle.
 std::string octahedronOFF(bool open = false);
+
+/// \brief Sets point array FeatureId to `ids`, padded with -1 to the point count.
+void setFeatureIds(vtkPolyData* surface, std::vector<int> ids);
 
 /// \brief Reads a surface with vtkCMPSurfaceReader and adds landmarks from a file.
 vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::string& landmarks);

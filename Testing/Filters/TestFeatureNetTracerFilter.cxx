@@ -44,16 +44,6 @@ double fieldValue(vtkPolyData* data, const char* name)
   return array ? array->GetComponent(0, 0) : NAN;
 }
 
-void setFeatureIds(vtkPolyData* surface, std::vector<int> ids)
-{
-  vtkNew<vtkIntArray> array;
-  array->SetName("FeatureId");
-  ids.resize(surface->GetNumberOfPoints(), -1);
-  for (int id : ids)
-    array->InsertNextValue(id);
-  surface->GetPointData()->AddArray(array);
-}
-
 } // namespace
 
 TEST(FeatureNetTracerFilter, TracesModel387AgainstL0From381AndCarriesArraysThrough)

@@ -70,16 +70,6 @@ void expectFailure(const RunResult& result, const std::string& fragment)
   EXPECT_NE(result.error.find(fragment), std::string::npos) << "error: " << result.error;
 }
 
-void setFeatureIds(vtkPolyData* surface, std::vector<int> ids)
-{
-  vtkNew<vtkIntArray> array;
-  array->SetName("FeatureId");
-  ids.resize(surface->GetNumberOfPoints(), -1);
-  for (int id : ids)
-    array->InsertNextValue(id);
-  surface->GetPointData()->AddArray(array);
-}
-
 vtkSmartPointer<vtkPolyData> octahedronBaseDomain()
 {
   vtkSmartPointer<vtkPolyData> domain = surfaceFromOFF("l0.off", octahedronOFF());
