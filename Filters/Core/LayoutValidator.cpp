@@ -87,6 +87,14 @@ std::string checkPatch(int patch, const std::vector<int>& triangles, const Label
 
 } // namespace
 
+BaseTriangles toBaseTriangles(const BaseDomain& domain)
+{
+  BaseTriangles base;
+  for (const Triangle& t : domain.mesh.triangles)
+    base.triangles.push_back({ domain.featureIds[t[0]], domain.featureIds[t[1]], domain.featureIds[t[2]] });
+  return base;
+}
+
 std::vector<std::string> validateLayout(const LabelledSurface& surface, const BaseTriangles& base)
 {
   std::vector<std::string> problems;

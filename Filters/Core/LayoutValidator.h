@@ -5,6 +5,8 @@
 ///        the tracer (plain arrays in, a list of problems out), so tests and
 ///        users can trust it to judge the tracer's output.
 
+#include "BaseDomain.h"
+
 #include <array>
 #include <string>
 #include <vector>
@@ -26,6 +28,9 @@ struct BaseTriangles
 {
   std::vector<std::array<int, 3>> triangles; ///< Features of each base triangle, counter-clockwise.
 };
+
+/// \brief The base domain's triangles as feature ids.
+BaseTriangles toBaseTriangles(const BaseDomain& domain);
 
 /// \brief Returns every way `surface` fails to be a layout of `base`:
 ///        each patch must be a topological disk whose boundary passes through

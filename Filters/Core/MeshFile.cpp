@@ -197,6 +197,8 @@ Status readOBJ(const std::string& path, MeshFileData& out)
 
 int weldIdenticalPoints(MeshFileData& data)
 {
+  if (data.fileToMeshPoint.empty())
+    identityPointMap(data);
   std::vector<Vec3>& points = data.mesh.points;
   const int n = static_cast<int>(points.size());
   // NaN breaks the ordering the sort needs; such a mesh is rejected by

@@ -37,8 +37,9 @@ Status readOBJ(const std::string& path, MeshFileData& out);
 /// \brief Merges points with identical coordinates and renumbers triangles.
 ///
 /// Keeps the first occurrence's order so that an already welded file keeps
-/// its point ids. Updates `fileToMeshPoint` (which must start as a map from
-/// file points to current points) and returns the number of points removed.
+/// its point ids. Updates `fileToMeshPoint` (a map from file points to
+/// current points; empty means the identity) and returns the number of
+/// points removed.
 /// O(n log n).
 int weldIdenticalPoints(MeshFileData& data);
 

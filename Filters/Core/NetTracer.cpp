@@ -20,6 +20,23 @@ double curveLength(const EditableMesh& mesh, const std::vector<int>& curve)
   return length;
 }
 
+LabelledSurface toLabelledSurface(const TracedNet& net, const BaseDomain& domain)
+{
+  LabelledSurface surface;
+  const EditableMesh& mesh = net.mesh;
+  surface.points.reserve(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    surface.points.push_back({ mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z() });
+  surface.triangles.reserve(mesh.triangleCount());
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    surface.triangles.push_back(mesh.triangle(t));
+  surface.patchId = net.patchOfTriangle;
+  surface.featureId.assign(mesh.vertexCount(), -1);
+  for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
+    surface.featureId[net.landmarkVertex[bv]] = domain.featureIds[bv];
+  return surface;
+}
+
 namespace
 {
 
@@ -479,10 +496,9 @@ private:
       const int h = net_.mesh.findHalfedge(u, x); // indices move as edges split
       if (h < 0 || net_.mesh.tag(h) >= 0)
         continue;
-      const int m = net_.mesh.splitEdge(h);
+      net_.mesh.splitEdge(h);
       coordinates_.appendInterpolated(u, x, 0.5);
       occupied_.push_back(0);
-      (void)m;
       ++report_.splitEdges;
     }
   }

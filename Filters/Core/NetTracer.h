@@ -6,6 +6,7 @@
 #include "BaseDomain.h"
 #include "EditableMesh.h"
 #include "Landmarks.h"
+#include "LayoutValidator.h"
 #include "Status.h"
 #include "TriangleMesh.h"
 
@@ -84,6 +85,10 @@ struct NetTracerReport
 /// vertex.
 Status traceFeatureNet(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
   TracedNet& net, const NetTracerOptions& options = {}, NetTracerReport* report = nullptr);
+
+/// \brief The traced net as the layout validator's input: the refined
+///        surface, its PatchId and the landmarks' feature ids.
+LabelledSurface toLabelledSurface(const TracedNet& net, const BaseDomain& domain);
 
 /// \brief Length of a curve given as mesh vertices.
 double curveLength(const EditableMesh& mesh, const std::vector<int>& curve);

@@ -69,7 +69,6 @@ class Model:
         self.landmark_path = landmark_path
         self.name = os.path.splitext(os.path.basename(mesh_path))[0]
         self.surface = None
-        self.net = None
         self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
 
     def timed(self, stage, function, *args):
@@ -163,7 +162,6 @@ def trace_net(model, domain, output_folder):
     }
     if not model.report["net"]["valid"]:
         raise StageError("the traced net failed the layout check")
-    model.net = surface
 
 
 def describe_base_domain(domain, source):

@@ -110,23 +110,11 @@ vtkSmartPointer<vtkPolyData> curvePolylines(const cmp::TracedNet& net, const cmp
   return output;
 }
 
-/// Runs the independent layout check on the output surface.
+/// Runs the independent layout check on the traced net.
 bool layoutIsValid(const cmp::TracedNet& net, const cmp::BaseDomain& domain, std::string& problem)
 {
-  cmp::LabelledSurface surface;
-  const cmp::TriangleMesh mesh = net.mesh.toTriangleMesh();
-  surface.points.reserve(mesh.points.size());
-  for (const cmp::Vec3& p : mesh.points)
-    surface.points.push_back({ p.x(), p.y(), p.z() });
-  surface.triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
-  surface.patchId = net.patchOfTriangle;
-  surface.featureId.assign(mesh.points.size(), -1);
-  for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
-    surface.featureId[net.landmarkVertex[bv]] = domain.featureIds[bv];
-  cmp::BaseTriangles base;
-  for (const cmp::Triangle& t : domain.mesh.triangles)
-    base.triangles.push_back({ domain.featureIds[t[0]], domain.featureIds[t[1]], domain.featureIds[t[2]] });
-  const std::vector<std::string> problems = cmp::validateLayout(surface, base);
+  const std::vector<std::string> problems =
+    cmp::validateLayout(cmp::toLabelledSurface(net, domain), cmp::toBaseTriangles(domain));
   problem = problems.empty() ? "" : problems.front();
   return problems.empty();
 }

@@ -210,12 +210,7 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   {
     status = readWithVTK(this->FileName, ext, fromVTK);
     if (status.ok())
-    {
       status = cmp::bridge::toTriangleMesh(fromVTK, data.mesh);
-      data.fileToMeshPoint.resize(data.mesh.vertexCount());
-      for (int i = 0; i < data.mesh.vertexCount(); ++i)
-        data.fileToMeshPoint[i] = i;
-    }
   }
   if (!status.ok())
   {

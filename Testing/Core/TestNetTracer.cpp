@@ -13,29 +13,6 @@ using namespace cmp;
 namespace
 {
 
-LabelledSurface labelled(const TracedNet& net, const BaseDomain& domain)
-{
-  LabelledSurface out;
-  const TriangleMesh mesh = net.mesh.toTriangleMesh();
-  for (const Vec3& p : mesh.points)
-    out.points.push_back({ p.x(), p.y(), p.z() });
-  for (const Triangle& t : mesh.triangles)
-    out.triangles.push_back({ t[0], t[1], t[2] });
-  out.patchId = net.patchOfTriangle;
-  out.featureId.assign(mesh.vertexCount(), -1);
-  for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
-    out.featureId[net.landmarkVertex[bv]] = domain.featureIds[bv];
-  return out;
-}
-
-BaseTriangles baseTriangles(const BaseDomain& domain)
-{
-  BaseTriangles out;
-  for (const Triangle& t : domain.mesh.triangles)
-    out.triangles.push_back({ domain.featureIds[t[0]], domain.featureIds[t[1]], domain.featureIds[t[2]] });
-  return out;
-}
-
 /// Traces and runs the independent validator; returns the report.
 NetTracerReport expectValidNet(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
   const std::string& what, NetTracerOptions options = {})
@@ -46,8 +23,8 @@ NetTracerReport expectValidNet(const TriangleMesh& surface, const LandmarkList& 
   EXPECT_TRUE(status.ok()) << what << ": " << status.message();
   if (!status.ok())
     return report;
-  const LabelledSurface out = labelled(net, domain);
-  for (const std::string& problem : validateLayout(out, baseTriangles(domain)))
+  const LabelledSurface out = toLabelledSurface(net, domain);
+  for (const std::string& problem : validateLayout(out, toBaseTriangles(domain)))
     ADD_FAILURE() << what << ": " << problem;
   EXPECT_NEAR(totalArea(out), surfaceArea(surface), 1e-9 * surfaceArea(surface)) << what;
   EXPECT_EQ(net.curves.size(), static_cast<std::size_t>(edgeCount(domain.mesh)));
@@ -251,8 +228,8 @@ TEST(NetValidator, CatchesBrokenLayouts)
   const BaseDomain octahedron = octahedronDomain();
   TracedNet net;
   ASSERT_TRUE(traceFeatureNet(sphere, landmarksAt(sphere, octahedron.mesh.points), octahedron, net).ok());
-  const LabelledSurface good = labelled(net, octahedron);
-  const BaseTriangles base = baseTriangles(octahedron);
+  const LabelledSurface good = toLabelledSurface(net, octahedron);
+  const BaseTriangles base = toBaseTriangles(octahedron);
   ASSERT_TRUE(validateLayout(good, base).empty());
 
   LabelledSurface swapped = good; // two whole patches exchange labels
