@@ -89,11 +89,46 @@ int EditableMesh::splitEdge(int h, double t)
   return m;
 }
 
+void EditableMesh::collapseEdge(int h)
+{
+  // t1 = (v, x, a) holds h = v->x, t2 = (x, v, b) holds g = x->v. Afterwards
+  // every triangle of v uses x, and the outer edges of t1 and t2 are glued.
+  const int g = opposite_[h];
+  const int v = from(h), x = to(h);
+  const int xa = next(h), av = prev(h), vb = next(g), bx = prev(g);
+  const int a = to(xa), b = to(vb);
+  const int outerXA = opposite_[xa], outerAV = opposite_[av], outerVB = opposite_[vb], outerBX = opposite_[bx];
+
+  for (int around = nextAroundVertex(h); around != h; around = nextAroundVertex(around))
+    triangles_[around / 3][around % 3] = x;
+  // v->a becomes x->a beside a->x; b->v becomes b->x beside x->b.
+  link(outerXA, outerAV);
+  link(outerVB, outerBX);
+  tags_[outerAV] = tags_[xa];
+  tags_[outerVB] = tags_[bx];
+  outgoing_[x] = outerAV;
+  outgoing_[a] = outerXA;
+  outgoing_[b] = outerVB;
+  outgoing_[v] = -1;
+  for (int t : { triangleOf(h), triangleOf(g) })
+  {
+    triangles_[t] = { -1, -1, -1 };
+    for (int k = 0; k < 3; ++k)
+    {
+      opposite_[3 * t + k] = -1;
+      tags_[3 * t + k] = -1;
+    }
+  }
+}
+
 TriangleMesh EditableMesh::toTriangleMesh() const
 {
   TriangleMesh mesh;
   mesh.points = points_;
-  mesh.triangles = triangles_;
+  mesh.triangles.reserve(triangles_.size());
+  for (const Triangle& tri : triangles_)
+    if (tri[0] >= 0)
+      mesh.triangles.push_back(tri);
   return mesh;
 }
 

@@ -83,7 +83,18 @@ public:
   ///        halves of the edge inherit its tags.
   int splitEdge(int h, double t = 0.5);
 
-  /// \brief The current mesh as an indexed face set.
+  /// \brief Merges the start of `h` into its end: the two triangles beside
+  ///        the edge are removed (`isRemoved()`), the start vertex is left
+  ///        unused. Only topology changes; the caller checks the link
+  ///        condition and the geometry first. Tags of the surviving edges are
+  ///        kept.
+  void collapseEdge(int h);
+  /// \brief True for a triangle removed by `collapseEdge()`.
+  bool isRemoved(int t) const { return triangles_[t][0] < 0; }
+
+  /// \brief The current mesh as an indexed face set (removed triangles are
+  ///        left out; use it only on a mesh without collapses to keep
+  ///        triangle indices).
   TriangleMesh toTriangleMesh() const;
 
 private:

@@ -12,78 +12,17 @@
 namespace cmp
 {
 
-double curveLength(const EditableMesh& mesh, const std::vector<int>& curve)
-{
-  double length = 0.0;
-  for (std::size_t i = 1; i < curve.size(); ++i)
-    length += (mesh.point(curve[i]) - mesh.point(curve[i - 1])).norm();
-  return length;
-}
-
-LabelledSurface toLabelledSurface(const TracedNet& net, const BaseDomain& domain)
-{
-  LabelledSurface surface;
-  const EditableMesh& mesh = net.mesh;
-  surface.points.reserve(mesh.vertexCount());
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    surface.points.push_back({ mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z() });
-  surface.triangles.reserve(mesh.triangleCount());
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-    surface.triangles.push_back(mesh.triangle(t));
-  surface.patchId = net.patchOfTriangle;
-  surface.featureId.assign(mesh.vertexCount(), -1);
-  for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
-    surface.featureId[net.landmarkVertex[bv]] = domain.featureIds[bv];
-  return surface;
-}
-
 namespace
 {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// Edges of the base domain, the triangles beside them and the cyclic
-/// (counter-clockwise) order of edges around every base vertex.
-struct BaseTopology
+/// Position of `edge` in the counter-clockwise order around `vertex`.
+int positionAt(const BaseTopology& base, int vertex, int edge)
 {
-  std::vector<std::array<int, 2>> edges;
-  std::vector<int> left, right;
-  std::vector<std::vector<int>> rotation; // per base vertex: incident edge ids, ccw
-
-  void build(const BaseDomain& domain)
-  {
-    CornerTable table;
-    table.build(domain.mesh); // checkBaseDomain() guarantees this works
-    std::vector<int> edgeOf(table.halfedgeCount(), -1);
-    for (int h = 0; h < table.halfedgeCount(); ++h)
-    {
-      if (table.opposite(h) < h)
-        continue;
-      edgeOf[h] = edgeOf[table.opposite(h)] = static_cast<int>(edges.size());
-      edges.push_back({ table.from(h), table.to(h) });
-      left.push_back(CornerTable::triangleOf(h));
-      right.push_back(CornerTable::triangleOf(table.opposite(h)));
-    }
-    rotation.resize(domain.mesh.vertexCount());
-    for (int v = 0; v < domain.mesh.vertexCount(); ++v)
-    {
-      const int start = table.outgoing(v);
-      int h = start;
-      do
-      {
-        rotation[v].push_back(edgeOf[h]);
-        h = table.nextAroundVertex(h);
-      } while (h != start);
-    }
-  }
-
-  int positionAt(int vertex, int edge) const
-  {
-    const auto& ring = rotation[vertex];
-    return static_cast<int>(std::find(ring.begin(), ring.end(), edge) - ring.begin());
-  }
-  int other(int edge, int vertex) const { return edges[edge][0] == vertex ? edges[edge][1] : edges[edge][0]; }
-};
+  const auto& ring = base.rotation[vertex];
+  return static_cast<int>(std::find(ring.begin(), ring.end(), edge) - ring.begin());
+}
 
 /// Third vertex of a base triangle, given two of its vertices.
 int thirdVertex(const Triangle& tri, int a, int b)
@@ -225,7 +164,7 @@ public:
       return s;
     for (const auto& curve : net_.curves)
       report_.netLength += curveLength(net_.mesh, curve);
-    return labelPatches();
+    return labelPatches(net_);
   }
 
 private:
@@ -354,7 +293,7 @@ private:
 
   std::vector<int> edgeSector(int e, int bv) const
   {
-    const int position = base_.positionAt(bv, e);
+    const int position = positionAt(base_, bv, e);
     return sector(bv, position - 1, position + 1);
   }
 
@@ -411,9 +350,9 @@ private:
     const int c = thirdVertex(domain_.mesh.triangles[base_.left[e]], a, b);
     const int d = thirdVertex(domain_.mesh.triangles[base_.right[e]], a, b);
     // Corner of (a, b, c) at c lies after edge (c, a); of (b, a, d) at d after (d, b).
-    const int ca = edgeBetween(c, a), cb = edgeBetween(c, b), db = edgeBetween(d, b), da = edgeBetween(d, a);
-    return reachesSide(e, c, base_.positionAt(c, ca), base_.positionAt(c, cb)) == Side::Right ||
-      reachesSide(e, d, base_.positionAt(d, db), base_.positionAt(d, da)) == Side::Left;
+    const int ca = base_.edgeBetween(c, a), cb = base_.edgeBetween(c, b), db = base_.edgeBetween(d, b), da = base_.edgeBetween(d, a);
+    return reachesSide(e, c, positionAt(base_, c, ca), positionAt(base_, c, cb)) == Side::Right ||
+      reachesSide(e, d, positionAt(base_, d, db), positionAt(base_, d, da)) == Side::Left;
   }
 
   enum class Side
@@ -447,14 +386,6 @@ private:
       if (net_.mesh.to(h) == path[i - 1])
         return Side::Right;
     }
-  }
-
-  int edgeBetween(int u, int v) const
-  {
-    for (int e : base_.rotation[u])
-      if (base_.other(e, u) == v)
-        return e;
-    return -1;
   }
 
   void insert(int e)
@@ -501,51 +432,6 @@ private:
       occupied_.push_back(0);
       ++report_.splitEdges;
     }
-  }
-
-  /// Every triangle gets the base triangle on its side of the curves.
-  Status labelPatches()
-  {
-    EditableMesh& mesh = net_.mesh;
-    auto& patch = net_.patchOfTriangle;
-    patch.assign(mesh.triangleCount(), -1);
-    std::vector<int> stack;
-    const auto seed = [&](int t, int label)
-    {
-      if (patch[t] < 0)
-      {
-        patch[t] = label;
-        stack.push_back(t);
-      }
-    };
-    for (int e = 0; e < static_cast<int>(net_.curves.size()); ++e)
-    {
-      const auto& curve = net_.curves[e];
-      for (std::size_t i = 0; i + 1 < curve.size(); ++i)
-      {
-        const int h = mesh.findHalfedge(curve[i], curve[i + 1]);
-        seed(EditableMesh::triangleOf(h), base_.left[e]);
-        seed(EditableMesh::triangleOf(mesh.opposite(h)), base_.right[e]);
-      }
-    }
-    while (!stack.empty())
-    {
-      const int t = stack.back();
-      stack.pop_back();
-      for (int h = 3 * t; h < 3 * t + 3; ++h)
-      {
-        if (mesh.tag(h) >= 0)
-          continue;
-        const int neighbour = EditableMesh::triangleOf(mesh.opposite(h));
-        if (patch[neighbour] >= 0 && patch[neighbour] != patch[t])
-          return Status::error("internal error: patches " + std::to_string(patch[t]) + " and " +
-            std::to_string(patch[neighbour]) + " touch away from a curve");
-        seed(neighbour, patch[t]);
-      }
-    }
-    if (std::find(patch.begin(), patch.end(), -1) != patch.end())
-      return Status::error("internal error: some triangles belong to no patch");
-    return {};
   }
 
   const BaseDomain& domain_;

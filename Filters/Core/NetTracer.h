@@ -4,9 +4,8 @@
 ///        the base domain (the paper's Sections 2.1 and 2.2).
 
 #include "BaseDomain.h"
-#include "EditableMesh.h"
 #include "Landmarks.h"
-#include "LayoutValidator.h"
+#include "PatchLayout.h"
 #include "Status.h"
 #include "TriangleMesh.h"
 
@@ -36,29 +35,6 @@ struct NetTracerOptions
   std::function<void(double)> progress;
 };
 
-/// \brief The traced net and the refined surface it lives on.
-struct TracedNet
-{
-  /// \brief The input surface, with edges split where curves needed room.
-  ///        Vertices 0..n-1 are the input's; `mesh.origin(v)` tells how later
-  ///        ones were made.
-  EditableMesh mesh;
-  /// \brief The base domain's edges as (base vertex, base vertex), in the
-  ///        direction of the base halfedge whose triangle is `leftTriangle`.
-  std::vector<std::array<int, 2>> baseEdges;
-  /// \brief Base triangle on the left of each base edge's direction.
-  std::vector<int> leftTriangle;
-  /// \brief Base triangle on the right of each base edge's direction.
-  std::vector<int> rightTriangle;
-  /// \brief For each base edge, the mesh vertices of its curve, from the
-  ///        landmark of `baseEdges[e][0]` to that of `baseEdges[e][1]`.
-  std::vector<std::vector<int>> curves;
-  /// \brief Base triangle (patch) of every mesh triangle.
-  std::vector<int> patchOfTriangle;
-  /// \brief Mesh vertex of each base vertex.
-  std::vector<int> landmarkVertex;
-};
-
 /// \brief Figures about a tracing run.
 struct NetTracerReport
 {
@@ -85,12 +61,5 @@ struct NetTracerReport
 /// vertex.
 Status traceFeatureNet(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
   TracedNet& net, const NetTracerOptions& options = {}, NetTracerReport* report = nullptr);
-
-/// \brief The traced net as the layout validator's input: the refined
-///        surface, its PatchId and the landmarks' feature ids.
-LabelledSurface toLabelledSurface(const TracedNet& net, const BaseDomain& domain);
-
-/// \brief Length of a curve given as mesh vertices.
-double curveLength(const EditableMesh& mesh, const std::vector<int>& curve);
 
 } // namespace cmp

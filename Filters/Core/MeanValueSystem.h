@@ -1,0 +1,39 @@
+#pragma once
+/// \file MeanValueSystem.h
+/// \brief Floater's mean value weights and the sparse system they define:
+///        every free vertex is the weighted mean of its neighbours. Used by
+///        the F-vector parameterization, the straightener's star maps and the
+///        per-patch parameterization.
+
+#include "Status.h"
+#include "TriangleMesh.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Floater's mean value weights from the 3D geometry: entry (i, j) is
+///        (tan(alpha/2) + tan(beta/2)) / |p_j - p_i| for every edge, where
+///        alpha and beta are the angles at i beside the edge. Not symmetric.
+Eigen::SparseMatrix<double> meanValueWeights(const TriangleMesh& mesh);
+
+/// \brief Solves x_v = sum_j W(v, j) x_j / sum_j W(v, j) for every vertex v
+///        with `fixedRow[v] < 0`; a vertex with `fixedRow[v] >= 0` keeps
+///        `fixedValues.row(fixedRow[v])`.
+///
+/// `values` becomes n x d (d = fixedValues.cols()). One sparse LU
+/// factorization serves all d columns. With positive weights and a convex
+/// boundary the result is a bijective embedding (Floater 1997). Vertices
+/// without neighbours must be fixed.
+Status solveConvexCombinationSystem(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values);
+
+/// \brief `solveConvexCombinationSystem()` with `meanValueWeights(mesh)`.
+Status solveMeanValueSystem(const TriangleMesh& mesh, const std::vector<int>& fixedRow,
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values);
+
+} // namespace cmp

@@ -1,0 +1,226 @@
+#include "PatchParameterization.h"
+
+#include "MeanValueSystem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cmp
+{
+
+bool coordinatesInTriangle(const BaseDomain& domain, int from, const std::array<double, 3>& coordinates, int to,
+  std::array<double, 3>& result)
+{
+  const Triangle& source = domain.mesh.triangles[from];
+  const Triangle& target = domain.mesh.triangles[to];
+  result = { 0.0, 0.0, 0.0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (coordinates[k] == 0.0)
+      continue;
+    const auto it = std::find(target.begin(), target.end(), source[k]);
+    if (it == target.end())
+      return false;
+    result[it - target.begin()] = coordinates[k];
+  }
+  return true;
+}
+
+namespace
+{
+
+/// Fills `values` (barycentric in `corners` order) for the curve vertices of
+/// the patch with corners a, b, c: each side by arc length.
+void boundaryCoordinates(const TracedNet& net, const BaseTopology& base, const Triangle& corners,
+  std::vector<int>& fixedRow, std::vector<std::array<double, 3>>& fixedValues, std::vector<int>& boundary)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const int a = corners[k], b = corners[(k + 1) % 3];
+    const int e = base.edgeBetween(a, b);
+    std::vector<int> curve = net.curves[e];
+    if (base.edges[e][0] != a)
+      std::reverse(curve.begin(), curve.end());
+    const double length = curveLength(net.mesh, curve);
+    double walked = 0.0;
+    for (std::size_t i = 0; i + 1 < curve.size(); ++i)
+    {
+      if (i > 0)
+        walked += (net.mesh.point(curve[i]) - net.mesh.point(curve[i - 1])).norm();
+      const double s = length > 0.0 ? walked / length : 0.0;
+      std::array<double, 3> value{ 0.0, 0.0, 0.0 };
+      value[k] = 1.0 - s;
+      value[(k + 1) % 3] = s;
+      fixedRow[curve[i]] = static_cast<int>(fixedValues.size());
+      fixedValues.push_back(value);
+      boundary.push_back(curve[i]);
+    }
+  }
+}
+
+constexpr int kMaximumStretchIterations = 30;
+/// A patch whose smallest triangle has less than this share of its
+/// parameter area, relative to its share of the surface area, is crowded.
+constexpr double kCrowded = 1e-4;
+
+/// min over triangles of (share of the base triangle's area) / (share of
+/// the patch's surface area): 1 for an area-preserving map, <= 0 if flipped.
+double smallestAreaRatio(const TriangleMesh& piece, const Eigen::MatrixXd& barycentric)
+{
+  double area3D = 0.0;
+  for (int t = 0; t < piece.triangleCount(); ++t)
+    area3D += triangleArea(piece, t);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < piece.triangleCount(); ++t)
+  {
+    const Triangle& tri = piece.triangles[t];
+    const Eigen::Vector2d e1 = barycentric.row(tri[1]) - barycentric.row(tri[0]);
+    const Eigen::Vector2d e2 = barycentric.row(tri[2]) - barycentric.row(tri[0]);
+    const double share = e1.x() * e2.y() - e1.y() * e2.x(); // the base triangle has 1
+    smallest = std::min(smallest, share * area3D / std::max(triangleArea(piece, t), 1e-300));
+  }
+  return smallest;
+}
+
+/// Sander's L2 stretch of each vertex (area-weighted over its triangles)
+/// for the map from the base triangle, drawn equilateral with the patch's
+/// area, to the surface; crowded vertices get a large value, capped.
+Eigen::VectorXd vertexStretch(const TriangleMesh& piece, const Eigen::MatrixXd& barycentric)
+{
+  double area3D = 0.0;
+  for (int t = 0; t < piece.triangleCount(); ++t)
+    area3D += triangleArea(piece, t);
+  const double side = std::sqrt(4.0 * area3D / std::sqrt(3.0));
+  const Eigen::Vector2d cornerB(side, 0.0), cornerC(0.5 * side, 0.5 * std::sqrt(3.0) * side);
+  const auto plane = [&](int v) -> Eigen::Vector2d { return barycentric(v, 0) * cornerB + barycentric(v, 1) * cornerC; };
+  constexpr double kCap = 1e8;
+  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(piece.vertexCount()), sum = weighted;
+  for (int t = 0; t < piece.triangleCount(); ++t)
+  {
+    const Triangle& tri = piece.triangles[t];
+    const Eigen::Vector2d q1 = plane(tri[0]), q2 = plane(tri[1]), q3 = plane(tri[2]);
+    const Vec3 &p1 = piece.points[tri[0]], &p2 = piece.points[tri[1]], &p3 = piece.points[tri[2]];
+    const double twiceArea = (q2.x() - q1.x()) * (q3.y() - q1.y()) - (q3.x() - q1.x()) * (q2.y() - q1.y());
+    double stretch = kCap;
+    if (twiceArea > 0.0)
+    {
+      const Vec3 ss = (p1 * (q2.y() - q3.y()) + p2 * (q3.y() - q1.y()) + p3 * (q1.y() - q2.y())) / twiceArea;
+      const Vec3 st = (p1 * (q3.x() - q2.x()) + p2 * (q1.x() - q3.x()) + p3 * (q2.x() - q1.x())) / twiceArea;
+      stretch = std::min(kCap, std::sqrt(0.5 * (ss.squaredNorm() + st.squaredNorm())));
+    }
+    const double area = triangleArea(piece, t);
+    for (int v : tri)
+    {
+      weighted[v] += area * stretch * stretch;
+      sum[v] += area;
+    }
+  }
+  Eigen::VectorXd result(piece.vertexCount());
+  for (int v = 0; v < piece.vertexCount(); ++v)
+    result[v] = sum[v] > 0.0 ? std::max(1.0, std::sqrt(weighted[v] / sum[v])) : 1.0;
+  return result;
+}
+
+} // namespace
+
+Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& out)
+{
+  const EditableMesh& mesh = net.mesh;
+  const int patchCount = domain.mesh.triangleCount();
+  BaseTopology base;
+  base.build(domain);
+  std::vector<std::vector<int>> trianglesOf(patchCount);
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    trianglesOf[net.patchOfTriangle[t]].push_back(t);
+
+  out = PatchParameterization{};
+  out.baseTriangle.assign(mesh.vertexCount(), -1);
+  out.baseCoordinates.assign(mesh.vertexCount(), { 0.0, 0.0, 0.0 });
+  out.smallestRelativeArea = 1.0;
+  out.smallestAreaRatio = std::numeric_limits<double>::infinity();
+  std::vector<int> local(mesh.vertexCount(), -1), globalFixedRow(mesh.vertexCount(), -1);
+  for (int patch = 0; patch < patchCount; ++patch)
+  {
+    std::vector<std::array<double, 3>> boundaryValues;
+    std::vector<int> boundary;
+    boundaryCoordinates(net, base, domain.mesh.triangles[patch], globalFixedRow, boundaryValues, boundary);
+
+    TriangleMesh piece;
+    std::vector<int> global;
+    for (int t : trianglesOf[patch])
+    {
+      Triangle tri = mesh.triangle(t);
+      for (int& v : tri)
+      {
+        if (local[v] < 0)
+        {
+          local[v] = static_cast<int>(global.size());
+          global.push_back(v);
+          piece.points.push_back(mesh.point(v));
+        }
+        v = local[v];
+      }
+      piece.triangles.push_back(tri);
+    }
+    std::vector<int> fixedRow(global.size(), -1);
+    for (std::size_t i = 0; i < global.size(); ++i)
+      fixedRow[i] = globalFixedRow[global[i]];
+    Eigen::MatrixXd fixedValues(boundaryValues.size(), 2), values;
+    for (std::size_t r = 0; r < boundaryValues.size(); ++r)
+      fixedValues.row(r) << boundaryValues[r][1], boundaryValues[r][2];
+    Eigen::SparseMatrix<double> weights = meanValueWeights(piece);
+    if (Status s = solveConvexCombinationSystem(weights, fixedRow, fixedValues, values); !s.ok())
+      return Status::error("patch " + std::to_string(patch) + ": " + s.message());
+    // Landmark-free protrusions (tails, ears) crowd exponentially in a mean
+    // value map, down to zero area in double precision. Lowering the weights
+    // towards stretched vertices (Yoshizawa et al. 2004) spreads them out;
+    // keep the least crowded map.
+    // Weights spanning many orders of magnitude make late iterations
+    // unstable, hence the cap, the patience and keeping the best map.
+    double crowding = smallestAreaRatio(piece, values);
+    Eigen::MatrixXd relaxed = values;
+    for (int iteration = 0, idle = 0; iteration < kMaximumStretchIterations && crowding < kCrowded && idle < 4;
+         ++iteration, ++idle)
+    {
+      weights = weights * vertexStretch(piece, relaxed).cwiseInverse().asDiagonal();
+      if (!solveConvexCombinationSystem(weights, fixedRow, fixedValues, relaxed).ok())
+        break;
+      const double relaxedCrowding = smallestAreaRatio(piece, relaxed);
+      if (relaxedCrowding > crowding)
+      {
+        crowding = relaxedCrowding;
+        values = relaxed;
+        idle = -1;
+      }
+    }
+    out.smallestAreaRatio = std::min(out.smallestAreaRatio, crowding);
+
+    for (const Triangle& tri : piece.triangles)
+    {
+      const Eigen::Vector2d p0 = values.row(tri[0]), p1 = values.row(tri[1]), p2 = values.row(tri[2]);
+      const Eigen::Vector2d e1 = p1 - p0, e2 = p2 - p0;
+      const double relativeArea = e1.x() * e2.y() - e1.y() * e2.x(); // base triangle: 1
+      out.smallestRelativeArea = std::min(out.smallestRelativeArea, relativeArea);
+      if (!(relativeArea > 0.0))
+        ++out.flippedTriangles;
+    }
+    for (std::size_t i = 0; i < global.size(); ++i)
+    {
+      const int v = global[i];
+      if (out.baseTriangle[v] < 0) // patches in increasing order: shared vertices keep the lowest
+      {
+        out.baseTriangle[v] = patch;
+        out.baseCoordinates[v] = fixedRow[i] >= 0 // exact zeros on the curves
+          ? boundaryValues[fixedRow[i]]
+          : std::array<double, 3>{ 1.0 - values(i, 0) - values(i, 1), values(i, 0), values(i, 1) };
+      }
+      local[v] = -1;
+    }
+    for (int v : boundary)
+      globalFixedRow[v] = -1;
+  }
+  return {};
+}
+
+} // namespace cmp

@@ -1,0 +1,217 @@
+#include "BaseDomainBuilder.h"
+#include "LayoutValidator.h"
+#include "MeshFile.h"
+#include "NetStraightener.h"
+#include "NetTracer.h"
+#include "PatchParameterization.h"
+#include "TestMeshes.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+using namespace cmp;
+
+namespace
+{
+
+/// Every vertex of `out` is the stated combination of input vertices, and
+/// those vertices belong to the input triangle of every triangle using it.
+void expectOnInputSurface(const TracedNet& input, const StraightenedNet& out, const std::string& what)
+{
+  const TriangleMesh before = input.mesh.toTriangleMesh();
+  const double tolerance = 1e-9 * boundingBoxDiagonal(before);
+  int off = 0, outside = 0;
+  for (int v = 0; v < out.net.mesh.vertexCount(); ++v)
+  {
+    Vec3 p = Vec3::Zero();
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k)
+      if (out.inputPoint[v].vertex[k] >= 0)
+      {
+        p += out.inputPoint[v].weight[k] * before.points[out.inputPoint[v].vertex[k]];
+        sum += out.inputPoint[v].weight[k];
+      }
+    off += (p - out.net.mesh.point(v)).norm() > tolerance || std::abs(sum - 1.0) > 1e-12;
+  }
+  for (int t = 0; t < out.net.mesh.triangleCount(); ++t)
+    for (int v : out.net.mesh.triangle(t))
+      for (int u : out.inputPoint[v].vertex)
+      {
+        const Triangle& home = before.triangles[out.inputTriangle[t]];
+        outside += u >= 0 && std::find(home.begin(), home.end(), u) == home.end();
+      }
+  EXPECT_EQ(off, 0) << what << ": vertices not where their input location says";
+  EXPECT_EQ(outside, 0) << what << ": vertices outside their triangle's input triangle";
+}
+
+struct StraightenResult
+{
+  NetStraightenerReport report;
+  PatchParameterization parameterization;
+  double seconds = 0.0;
+};
+
+/// Traces, straightens, parameterizes and checks everything the issue asks.
+StraightenResult expectStraightened(const TriangleMesh& surface, const LandmarkList& landmarks,
+  const BaseDomain& domain, const std::string& what)
+{
+  StraightenResult result;
+  TracedNet traced;
+  const Status traceStatus = traceFeatureNet(surface, landmarks, domain, traced);
+  EXPECT_TRUE(traceStatus.ok()) << what << ": " << traceStatus.message();
+  if (!traceStatus.ok())
+    return result;
+  StraightenedNet straight;
+  const auto start = std::chrono::steady_clock::now();
+  Status status = straightenNet(traced, domain, straight, {}, &result.report);
+  if (status.ok())
+    status = parameterizePatches(straight.net, domain, result.parameterization);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(status.ok()) << what << ": " << status.message();
+  if (!status.ok())
+    return result;
+  const LabelledSurface labelled = toLabelledSurface(straight.net, domain);
+  for (const std::string& problem : validateLayout(labelled, toBaseTriangles(domain)))
+    ADD_FAILURE() << what << ": " << problem;
+  EXPECT_NEAR(totalArea(labelled), surfaceArea(surface), 1e-9 * surfaceArea(surface)) << what;
+  expectOnInputSurface(traced, straight, what);
+  EXPECT_EQ(result.parameterization.flippedTriangles, 0) << what;
+  // Every corner's coordinates can be read in the patch of every triangle
+  // using it: vertices on curves lie on the shared base edge.
+  int inconsistent = 0;
+  for (int t = 0; t < straight.net.mesh.triangleCount(); ++t)
+    for (int v : straight.net.mesh.triangle(t))
+    {
+      std::array<double, 3> inPatch;
+      inconsistent += !coordinatesInTriangle(domain, result.parameterization.baseTriangle[v],
+        result.parameterization.baseCoordinates[v], straight.net.patchOfTriangle[t], inPatch);
+    }
+  EXPECT_EQ(inconsistent, 0) << what;
+  EXPECT_LE(result.report.netLengthAfter, 1.02 * result.report.netLengthBefore) << what;
+  EXPECT_LT(result.report.areaVariationAfter, result.report.areaVariationBefore) << what;
+  EXPECT_EQ(result.report.skippedStars, 0) << what;
+  return result;
+}
+
+} // namespace
+
+TEST(NetStraightener, OctahedronLayoutOnABumpySphere)
+{
+  TriangleMesh mesh = test::sphere(4);
+  for (Vec3& p : mesh.points)
+    p *= 1.0 + 0.2 * std::sin(5 * p.x()) * std::sin(4 * p.y()) * std::sin(3 * p.z());
+  const TriangleMesh o = test::octahedron();
+  BaseDomain domain{ o, { 0, 1, 2, 3, 4, 5 } };
+  LandmarkList landmarks;
+  // Turned so that no curve can follow the sphere's great-circle edges.
+  const Eigen::Matrix3d turn =
+    (Eigen::AngleAxisd(0.4, Vec3::UnitZ()) * Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized())).toRotationMatrix();
+  for (const Vec3& axis : o.points)
+  {
+    const Vec3 d = turn * axis;
+    int best = 0;
+    for (int v = 1; v < mesh.vertexCount(); ++v)
+      if (mesh.points[v].normalized().dot(d) > mesh.points[best].normalized().dot(d))
+        best = v;
+    landmarks.push_back(best);
+  }
+  const StraightenResult result = expectStraightened(mesh, landmarks, domain, "bumpy sphere");
+  EXPECT_GE(result.report.sweeps, 1);
+  std::cout << "bumpy sphere: length " << result.report.netLengthBefore << " -> " << result.report.netLengthAfter
+            << ", area variation " << result.report.areaVariationBefore << " -> "
+            << result.report.areaVariationAfter << ", sweeps " << result.report.sweeps << "\n";
+}
+
+TEST(NetStraightener, EveryRealModelWithL0From381)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  MeshFileData source;
+  LandmarkList sourceLandmarks;
+  const std::string sourcePath = test::sharedDataDir() + "/shrec07-fourleg/381";
+  ASSERT_TRUE(readOFF(sourcePath + ".off", source).ok());
+  ASSERT_TRUE(readLandmarkFile(sourcePath + ".vts", source.mesh, source.fileToMeshPoint, sourceLandmarks).ok());
+  BaseDomain domain;
+  ASSERT_TRUE(buildBaseDomain(source.mesh, sourceLandmarks, domain).ok());
+
+  std::vector<std::pair<std::string, MeshFileData>> models;
+  std::vector<LandmarkList> landmarks;
+  for (const std::string& path : test::landmarkedFourLeggedModels())
+  {
+    MeshFileData data;
+    LandmarkList l;
+    ASSERT_TRUE(readOFF(path + ".off", data).ok());
+    ASSERT_TRUE(readLandmarkFile(path + ".vts", data.mesh, data.fileToMeshPoint, l).ok());
+    models.emplace_back(path.substr(path.find_last_of('/') + 1), std::move(data));
+    landmarks.push_back(l);
+  }
+  MeshFileData spot;
+  LandmarkList spotLandmarks;
+  ASSERT_TRUE(readOBJ(test::sharedDataDir() + "/spot/spot.obj", spot).ok());
+  ASSERT_TRUE(
+    readLandmarkFile(test::sharedDataDir() + "/spot/spot_shrec07.pinned", spot.mesh, spot.fileToMeshPoint, spotLandmarks)
+      .ok());
+  models.emplace_back("spot", std::move(spot));
+  landmarks.push_back(spotLandmarks);
+  ASSERT_GE(models.size(), 11u);
+
+  for (std::size_t i = 0; i < models.size(); ++i)
+  {
+    const auto& [name, data] = models[i];
+    const StraightenResult r = expectStraightened(data.mesh, landmarks[i], domain, name);
+    const double root = std::sqrt(surfaceArea(data.mesh));
+    std::cout << name << ": length/sqrt(area) " << r.report.netLengthBefore / root << " -> "
+              << r.report.netLengthAfter / root << ", area variation " << r.report.areaVariationBefore << " -> "
+              << r.report.areaVariationAfter << ", sweeps " << r.report.sweeps << ", removed "
+              << r.report.removedVertices << ", smallest area ratio " << r.parameterization.smallestAreaRatio
+              << ", " << r.seconds << " s\n";
+  }
+}
+
+
+TEST(NetStraightener, RebuildsTheNetFromPatchIdsAndRefusesBadInput)
+{
+  TriangleMesh mesh = test::sphere(3);
+  const TriangleMesh o = test::octahedron();
+  BaseDomain domain{ o, { 0, 1, 2, 3, 4, 5 } };
+  LandmarkList landmarks;
+  for (const Vec3& d : o.points)
+  {
+    int best = 0;
+    for (int v = 1; v < mesh.vertexCount(); ++v)
+      if (mesh.points[v].dot(d) > mesh.points[best].dot(d))
+        best = v;
+    landmarks.push_back(best);
+  }
+  TracedNet traced;
+  ASSERT_TRUE(traceFeatureNet(mesh, landmarks, domain, traced).ok());
+  const TriangleMesh refined = traced.mesh.toTriangleMesh();
+
+  TracedNet rebuilt;
+  const Status ok = layoutFromPatchIds(refined, traced.patchOfTriangle, landmarks, domain, rebuilt);
+  ASSERT_TRUE(ok.ok()) << ok.message();
+  EXPECT_EQ(rebuilt.curves, traced.curves);
+
+  std::vector<int> broken = traced.patchOfTriangle;
+  broken[0] = (broken[0] + 1) % domain.mesh.triangleCount();
+  EXPECT_FALSE(layoutFromPatchIds(refined, broken, landmarks, domain, rebuilt).ok());
+  broken[0] = 99;
+  const Status outOfRange = layoutFromPatchIds(refined, broken, landmarks, domain, rebuilt);
+  EXPECT_NE(outOfRange.message().find("PatchId 99"), std::string::npos) << outOfRange.message();
+
+  StraightenedNet out;
+  NetStraightenerOptions options;
+  options.snapTolerance = 0.7;
+  EXPECT_NE(straightenNet(traced, domain, out, options).message().find("out of range"), std::string::npos);
+  const TriangleMesh t = test::tetrahedron();
+  BaseDomain other{ t, { 0, 1, 2, 3 } };
+  EXPECT_NE(straightenNet(traced, other, out).message().find("does not belong"), std::string::npos);
+  options = {};
+  options.maxSweeps = 0; // only the final clean-up: the traced net itself
+  NetStraightenerReport report;
+  ASSERT_TRUE(straightenNet(traced, domain, out, options, &report).ok());
+  EXPECT_EQ(report.sweeps, 0);
+  EXPECT_NEAR(report.netLengthAfter, report.netLengthBefore, 1e-12 * report.netLengthBefore);
+}
