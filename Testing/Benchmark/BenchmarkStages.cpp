@@ -74,6 +74,35 @@ Status traceStage(ModelContext& ctx)
   return status;
 }
 
+/// \brief `straighten`: straighten the traced net (the sweeps and
+///        tolerance defaults).
+Status straightenStage(ModelContext& ctx)
+{
+  ctx.straight = StraightenedNet{};
+  ctx.straightReport = NetStraightenerReport{};
+  const Status status = straightenNet(ctx.net, ctx.traceDomain(), ctx.straight, {}, &ctx.straightReport);
+  if (!status.ok())
+    return status;
+  const double root = std::sqrt(surfaceArea(ctx.surface()));
+  setFigure(ctx.figures, "straight_length_per_sqrt_area", ctx.straightReport.netLengthAfter / root);
+  setFigure(ctx.figures, "area_variation_traced", ctx.straightReport.areaVariationBefore);
+  setFigure(ctx.figures, "area_variation_straight", ctx.straightReport.areaVariationAfter);
+  setFigure(ctx.figures, "sweeps", ctx.straightReport.sweeps);
+  return status;
+}
+
+/// \brief `parameterize`: map every patch onto its base triangle.
+Status parameterizeStage(ModelContext& ctx)
+{
+  ctx.parameterization = PatchParameterization{};
+  const Status status = parameterizePatches(ctx.straight.net, ctx.traceDomain(), ctx.parameterization);
+  if (!status.ok())
+    return status;
+  setFigure(ctx.figures, "flipped_triangles", ctx.parameterization.flippedTriangles);
+  setFigure(ctx.figures, "smallest_area_ratio", ctx.parameterization.smallestAreaRatio);
+  return status;
+}
+
 bool isSubdivided(const ModelSpec& spec)
 {
   return spec.subdivisionLevels > 0;
@@ -84,7 +113,7 @@ bool isSubdivided(const ModelSpec& spec)
 const std::vector<Stage>& pipelineStages()
 {
   // Pipeline order. A later stage appends one line here, e.g.
-  //   { "straighten", straightenStage, {} },
+  //   { "remesh", remeshStage, {} },
   static const std::vector<Stage> stages = {
     { "read", readStage, {} },
     { "subdivide", subdivideStage, isSubdivided },
@@ -92,6 +121,8 @@ const std::vector<Stage>& pipelineStages()
     { "landmarks", landmarksStage, {} },
     { "base_domain", baseDomainStage, {} },
     { "trace", traceStage, {} },
+    { "straighten", straightenStage, {} },
+    { "parameterize", parameterizeStage, {} },
   };
   return stages;
 }

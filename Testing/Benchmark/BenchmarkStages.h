@@ -15,7 +15,9 @@
 #include "BaseDomainBuilder.h"
 #include "Landmarks.h"
 #include "MeshFile.h"
+#include "NetStraightener.h"
 #include "NetTracer.h"
+#include "PatchParameterization.h"
 #include "Status.h"
 #include "SurfaceCheck.h"
 #include "TriangleMesh.h"
@@ -83,7 +85,10 @@ struct ModelContext
   BaseDomainBuilderReport domainReport;   ///< `base_domain`: collapses, shape quality.
   TracedNet net;                          ///< `trace`: the net on the refined surface.
   NetTracerReport netReport;              ///< `trace`: length, retraces, splits.
-  // Later stages add their outputs here (straightened net, parameterization, ...).
+  StraightenedNet straight;               ///< `straighten`: the straightened net.
+  NetStraightenerReport straightReport;   ///< `straighten`: lengths, area variation, sweeps.
+  PatchParameterization parameterization; ///< `parameterize`: base-domain place of every vertex.
+  // Later stages add their outputs here (remesh, ...).
   FigureList figures;                     ///< Per-model numbers the stages report.
 
   /// \brief The surface every stage after `read` works on: the subdivided
