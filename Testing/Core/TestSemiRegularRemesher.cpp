@@ -1,0 +1,123 @@
+#include "BaseDomainBuilder.h"
+#include "MeshFile.h"
+#include "NetStraightener.h"
+#include "NetTracer.h"
+#include "PatchParameterization.h"
+#include "SemiRegularRemesher.h"
+#include "SurfaceCheck.h"
+#include "TestMeshes.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+using namespace cmp;
+
+namespace
+{
+
+BaseDomain octahedronDomain()
+{
+  const TriangleMesh o = test::octahedron();
+  return BaseDomain{ o, { 3, 0, 5, 1, 4, 2 } }; // features not in vertex order
+}
+
+} // namespace
+
+TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel)
+{
+  const BaseDomain domain = octahedronDomain();
+  SemiRegularMesh previous;
+  for (int level = 0; level <= 4; ++level)
+  {
+    SemiRegularMesh mesh;
+    ASSERT_TRUE(buildSemiRegularMesh(domain, level, mesh).ok());
+    const int triangles = 8 << (2 * level);
+    EXPECT_EQ(mesh.triangles.size(), static_cast<std::size_t>(triangles));
+    EXPECT_EQ(mesh.vertexCount(), 2 + triangles / 2); // genus 0
+    // Drawn on the octahedron, the remesh is a closed, oriented manifold.
+    TriangleMesh drawn;
+    for (const BaseLocation& at : mesh.locations)
+    {
+      Vec3 p = Vec3::Zero();
+      for (int k = 0; k < 3; ++k)
+        p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
+      drawn.points.push_back(p);
+    }
+    drawn.triangles = mesh.triangles;
+    const SurfaceCheckResult check = checkSurface(drawn);
+    EXPECT_TRUE(check.ok()) << "level " << level << ": " << check.message;
+    // Vertex f is base vertex of feature f.
+    for (int bv = 0; bv < 6; ++bv)
+      EXPECT_DOUBLE_EQ((drawn.points[domain.featureIds[bv]] - domain.mesh.points[bv]).norm(), 0.0);
+    // Coarser levels are a prefix.
+    for (int v = 0; v < previous.vertexCount(); ++v)
+    {
+      EXPECT_EQ(mesh.locations[v].triangle, previous.locations[v].triangle);
+      EXPECT_EQ(mesh.locations[v].coordinates, previous.locations[v].coordinates);
+    }
+    previous = mesh;
+  }
+  SemiRegularMesh bad;
+  EXPECT_FALSE(buildSemiRegularMesh(domain, 9, bad).ok());
+  EXPECT_FALSE(buildSemiRegularMesh(domain, -1, bad).ok());
+}
+
+TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  MeshFileData source;
+  LandmarkList sourceLandmarks;
+  const std::string dir = test::sharedDataDir() + "/shrec07-fourleg/";
+  ASSERT_TRUE(readOFF(dir + "381.off", source).ok());
+  ASSERT_TRUE(readLandmarkFile(dir + "381.vts", source.mesh, source.fileToMeshPoint, sourceLandmarks).ok());
+  BaseDomain domain;
+  ASSERT_TRUE(buildBaseDomain(source.mesh, sourceLandmarks, domain).ok());
+  const int level = 5;
+  SemiRegularMesh remesh;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, level, remesh).ok());
+
+  for (const std::string& path : test::landmarkedFourLeggedModels())
+  {
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    MeshFileData data;
+    LandmarkList landmarks;
+    ASSERT_TRUE(readOFF(path + ".off", data).ok());
+    ASSERT_TRUE(readLandmarkFile(path + ".vts", data.mesh, data.fileToMeshPoint, landmarks).ok());
+    TracedNet traced;
+    ASSERT_TRUE(traceFeatureNet(data.mesh, landmarks, domain, traced).ok());
+    StraightenedNet straight;
+    ASSERT_TRUE(straightenNet(traced, domain, straight).ok());
+    PatchParameterization parameterization;
+    ASSERT_TRUE(parameterizePatches(straight.net, domain, parameterization).ok());
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<SurfaceSample> samples;
+    const Status placed = placeOnSurface(remesh, straight.net, domain, parameterization, samples);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_TRUE(placed.ok()) << name << ": " << placed.message();
+    const std::vector<Vec3> positions = samplePositions(straight.net, samples);
+    for (int f = 0; f < domain.mesh.vertexCount(); ++f)
+      EXPECT_EQ(positions[f], data.mesh.points[landmarks[f]]) << name << " landmark " << f;
+    // Normals against the surface under each remesh triangle.
+    int flipped = 0;
+    for (const Triangle& tri : remesh.triangles)
+    {
+      const Vec3 normal = (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
+      Vec3 surfaceNormal = Vec3::Zero();
+      for (int v : tri)
+      {
+        const SurfaceSample& s = samples[v];
+        if (s.vertex[1] < 0)
+          continue; // a landmark: no triangle recorded
+        const Vec3 a = straight.net.mesh.point(s.vertex[0]), b = straight.net.mesh.point(s.vertex[1]),
+                   c = straight.net.mesh.point(s.vertex[2]);
+        surfaceNormal += (b - a).cross(c - a);
+      }
+      flipped += normal.dot(surfaceNormal) < 0.0;
+    }
+    std::cout << name << ": level " << level << ", " << remesh.vertexCount() << " vertices, placed in " << seconds
+              << " s, " << flipped << " triangles against the surface normal\n";
+  }
+}
