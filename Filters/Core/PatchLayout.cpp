@@ -147,6 +147,8 @@ Status layoutFromPatchIds(const TriangleMesh& surface, const std::vector<int>& p
   if (static_cast<int>(patchId.size()) != surface.triangleCount())
     return Status::error("PatchId has " + std::to_string(patchId.size()) + " values for " +
       std::to_string(surface.triangleCount()) + " triangles");
+  if (Status s = validateLandmarks(landmarks, surface.vertexCount(), domain.mesh.vertexCount()); !s.ok())
+    return s;
   const int patchCount = domain.mesh.triangleCount();
   for (int p : patchId)
     if (p < 0 || p >= patchCount)
