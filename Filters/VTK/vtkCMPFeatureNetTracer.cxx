@@ -4,7 +4,6 @@
 #include "NetTracer.h"
 #include "vtkCMPPolyDataBridge.h"
 
-#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -13,11 +12,9 @@
 #include <vtkIntArray.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include <cmath>
-#include <unordered_map>
 
 vtkStandardNewMacro(vtkCMPFeatureNetTracer);
 
@@ -75,41 +72,6 @@ vtkSmartPointer<vtkPolyData> refinedSurface(const cmp::TracedNet& net, vtkPolyDa
   return surface;
 }
 
-/// The net as polylines, one per base edge, on its own compact point set.
-vtkSmartPointer<vtkPolyData> curvePolylines(const cmp::TracedNet& net, const cmp::BaseDomain& domain)
-{
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  auto lines = vtkSmartPointer<vtkCellArray>::New();
-  std::unordered_map<int, vtkIdType> pointOf;
-  const auto edges = static_cast<vtkIdType>(net.curves.size());
-  auto baseEdgeIds = intArray("BaseEdgeId", edges);
-  auto featureA = intArray("FeatureIdA", edges);
-  auto featureB = intArray("FeatureIdB", edges);
-  for (vtkIdType e = 0; e < edges; ++e)
-  {
-    const auto& curve = net.curves[e];
-    lines->InsertNextCell(static_cast<vtkIdType>(curve.size()));
-    for (int v : curve)
-    {
-      auto [it, inserted] = pointOf.emplace(v, points->GetNumberOfPoints());
-      if (inserted)
-        points->InsertNextPoint(net.mesh.point(v).data());
-      lines->InsertCellPoint(it->second);
-    }
-    baseEdgeIds->SetValue(e, static_cast<int>(e));
-    featureA->SetValue(e, domain.featureIds[net.baseEdges[e][0]]);
-    featureB->SetValue(e, domain.featureIds[net.baseEdges[e][1]]);
-  }
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  output->SetPoints(points);
-  output->SetLines(lines);
-  output->GetCellData()->AddArray(baseEdgeIds);
-  output->GetCellData()->AddArray(featureA);
-  output->GetCellData()->AddArray(featureB);
-  return output;
-}
-
 /// Runs the independent layout check on the traced net.
 bool layoutIsValid(const cmp::TracedNet& net, const cmp::BaseDomain& domain, std::string& problem)
 {
@@ -161,7 +123,7 @@ int vtkCMPFeatureNetTracer::RequestData(
   if (!valid)
     vtkWarningMacro("the traced net failed the layout check: " << problem);
   surfaceOutput->ShallowCopy(refinedSurface(net, input));
-  curvesOutput->ShallowCopy(curvePolylines(net, domain));
+  curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(net, domain));
   const double lengthPerSqrtArea = report.netLength / std::sqrt(cmp::surfaceArea(mesh));
   for (vtkPolyData* output : { surfaceOutput, curvesOutput })
   {

@@ -4,6 +4,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -13,6 +14,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
+
+#include <unordered_map>
 
 namespace cmp::bridge
 {
@@ -57,24 +60,31 @@ Status toCheckedSurface(vtkPolyData* input, TriangleMesh& mesh)
 namespace
 {
 
-Status readIntegerPointArray(vtkDataSet* input, const char* name, std::vector<int>& values)
+/// Reads a one-component integer array; `kind` is "point" or "cell" and
+/// `hint` says how to get the array when it is missing.
+Status readIntegerArray(vtkDataArray* array, const std::string& kind, const char* name, const char* hint,
+  std::vector<int>& values)
 {
-  vtkDataArray* array = input ? input->GetPointData()->GetArray(name) : nullptr;
   if (!array)
-    return Status::error(std::string("missing point array '") + name +
-      "' (set landmarks first, e.g. with the Landmarks From File filter)");
+    return Status::error("missing " + kind + " array '" + name + "' (" + hint + ")");
   if (array->GetNumberOfComponents() != 1)
-    return Status::error(std::string("point array '") + name + "' must have one component");
+    return Status::error(kind + " array '" + name + "' must have one component");
   values.resize(array->GetNumberOfTuples());
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
   {
     const double value = array->GetComponent(i, 0);
     if (value != static_cast<int>(value))
-      return Status::error(std::string("point array '") + name + "' has a non-integer value at point " +
+      return Status::error(kind + " array '" + name + "' has a non-integer value at " + kind + " " +
         std::to_string(i));
     values[i] = static_cast<int>(value);
   }
   return {};
+}
+
+Status readIntegerPointArray(vtkDataSet* input, const char* name, std::vector<int>& values)
+{
+  return readIntegerArray(input ? input->GetPointData()->GetArray(name) : nullptr, "point", name,
+    "set landmarks first, e.g. with the Landmarks From File filter", values);
 }
 
 } // namespace
@@ -85,6 +95,18 @@ Status readLandmarks(vtkPolyData* input, LandmarkList& landmarks)
   if (Status s = readIntegerPointArray(input, kFeatureIdArray, featureIds); !s.ok())
     return s;
   return landmarksFromFeatureIds(featureIds, landmarks);
+}
+
+Status readPatchIds(vtkPolyData* input, std::vector<int>& patchIds)
+{
+  if (Status s = readIntegerArray(input ? input->GetCellData()->GetArray(kPatchIdArray) : nullptr, "cell",
+        kPatchIdArray, "connect the Surface output of Feature Net Tracer", patchIds);
+      !s.ok())
+    return s;
+  if (static_cast<vtkIdType>(patchIds.size()) != input->GetNumberOfCells())
+    return Status::error("cell array 'PatchId' has " + std::to_string(patchIds.size()) + " values for " +
+      std::to_string(input->GetNumberOfCells()) + " triangles");
+  return {};
 }
 
 Status toBaseDomain(vtkPolyData* input, BaseDomain& domain, int landmarkCount)
@@ -132,6 +154,47 @@ vtkSmartPointer<vtkPolyData> toPolyData(const BaseDomain& domain)
   for (std::size_t i = 0; i < domain.featureIds.size(); ++i)
     featureIds->SetValue(static_cast<vtkIdType>(i), domain.featureIds[i]);
   output->GetPointData()->AddArray(featureIds);
+  return output;
+}
+
+vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  std::unordered_map<int, vtkIdType> pointOf; // curves share their landmarks
+  const auto edges = static_cast<vtkIdType>(net.curves.size());
+  const auto intArray = [edges](const char* name)
+  {
+    auto array = vtkSmartPointer<vtkIntArray>::New();
+    array->SetName(name);
+    array->SetNumberOfValues(edges);
+    return array;
+  };
+  auto baseEdgeIds = intArray("BaseEdgeId");
+  auto featureA = intArray("FeatureIdA");
+  auto featureB = intArray("FeatureIdB");
+  for (vtkIdType e = 0; e < edges; ++e)
+  {
+    const auto& curve = net.curves[e];
+    lines->InsertNextCell(static_cast<vtkIdType>(curve.size()));
+    for (int v : curve)
+    {
+      auto [it, inserted] = pointOf.emplace(v, points->GetNumberOfPoints());
+      if (inserted)
+        points->InsertNextPoint(net.mesh.point(v).data());
+      lines->InsertCellPoint(it->second);
+    }
+    baseEdgeIds->SetValue(e, static_cast<int>(e));
+    featureA->SetValue(e, domain.featureIds[net.baseEdges[e][0]]);
+    featureB->SetValue(e, domain.featureIds[net.baseEdges[e][1]]);
+  }
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(baseEdgeIds);
+  output->GetCellData()->AddArray(featureA);
+  output->GetCellData()->AddArray(featureB);
   return output;
 }
 

@@ -5,6 +5,7 @@
 
 #include "BaseDomain.h"
 #include "Landmarks.h"
+#include "PatchLayout.h"
 #include "Status.h"
 #include "TriangleMesh.h"
 
@@ -23,6 +24,8 @@ constexpr const char* kFeatureIdArray = "FeatureId";
 constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
 /// \brief Name of the cell array of per-corner texture coordinates (6 values).
 constexpr const char* kCornerTCoordsArray = "CornerTCoords";
+/// \brief Name of the cell array holding the base triangle (patch) of each triangle.
+constexpr const char* kPatchIdArray = "PatchId";
 
 /// \brief Copies points and triangles; fails, naming the cell, if `input`
 ///        has cells that are not triangles (vertices, lines, polygons, strips).
@@ -35,6 +38,10 @@ Status toCheckedSurface(vtkPolyData* input, TriangleMesh& mesh);
 /// \brief Reads the `FeatureId` point array (any integer type) as landmarks.
 Status readLandmarks(vtkPolyData* input, LandmarkList& landmarks);
 
+/// \brief Reads the `PatchId` cell array (any integer type, one value per
+///        triangle), as Feature Net Tracer writes it.
+Status readPatchIds(vtkPolyData* input, std::vector<int>& patchIds);
+
 /// \brief Reads a base domain polydata (points, triangles, `FeatureId`) and
 ///        checks it, and that it has `landmarkCount` vertices when >= 0.
 Status toBaseDomain(vtkPolyData* input, BaseDomain& domain, int landmarkCount = -1);
@@ -44,6 +51,12 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);
 
 /// \brief Builds the base domain polydata with its `FeatureId` point array.
 vtkSmartPointer<vtkPolyData> toPolyData(const BaseDomain& domain);
+
+/// \brief The curves of a patch layout as polylines, one cell per base edge
+///        (in base edge order) on a compact point set, with cell arrays
+///        `BaseEdgeId`, `FeatureIdA` and `FeatureIdB` (the landmarks at each
+///        curve's first and last point).
+vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain);
 
 /// \brief Adds (or replaces) a one-value double array in field data.
 void setFieldValue(vtkFieldData* fieldData, const char* name, double value);

@@ -1,0 +1,304 @@
+#include "vtkCMPNetStraightener.h"
+
+#include "LayoutValidator.h"
+#include "NetStraightener.h"
+#include "PatchLayout.h"
+#include "PatchParameterization.h"
+#include "vtkCMPPolyDataBridge.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkCMPNetStraightener);
+
+vtkCMPNetStraightener::vtkCMPNetStraightener()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+int vtkCMPNetStraightener::FillInputPortInformation(int, vtkInformation* info)
+{
+  // A multiblock on port 0 is handled by the composite pipeline, which runs
+  // this filter block by block (as for the tracer).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+namespace
+{
+
+constexpr const char* kBaseTriangleArray = "BaseTriangle";
+constexpr const char* kBaseCoordinatesArray = "BaseCoordinates";
+
+/// The first property out of range, described; "" when all are fine. The
+/// setters do not clamp, so that a wrong value is reported rather than
+/// silently changed.
+std::string propertyProblem(int sweeps, double tolerance, double snap)
+{
+  std::ostringstream problem;
+  if (sweeps < 0)
+    problem << "MaximumSweeps must be 0 or more (it is " << sweeps << ")";
+  else if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
+    problem << "Tolerance must be a finite number >= 0 (it is " << tolerance << ")";
+  else if (!(snap >= 0.0 && snap < 0.5))
+    problem << "SnapTolerance must be at least 0 and below 0.5 (it is " << snap << ")";
+  return problem.str();
+}
+
+/// The labelled surface the layout validator judges: the input's triangles,
+/// its PatchId and its landmarks.
+cmp::LabelledSurface labelledInput(
+  const cmp::TriangleMesh& mesh, const std::vector<int>& patchIds, const cmp::LandmarkList& landmarks)
+{
+  cmp::LabelledSurface surface;
+  surface.points.reserve(mesh.points.size());
+  for (const cmp::Vec3& p : mesh.points)
+    surface.points.push_back({ p.x(), p.y(), p.z() });
+  surface.triangles = mesh.triangles;
+  surface.patchId = patchIds;
+  surface.featureId.assign(mesh.points.size(), -1);
+  for (std::size_t f = 0; f < landmarks.size(); ++f)
+    surface.featureId[landmarks[f]] = static_cast<int>(f);
+  return surface;
+}
+
+/// The first problem the independent layout check finds, or "".
+std::string layoutProblem(const cmp::LabelledSurface& surface, const cmp::BaseDomain& domain)
+{
+  const std::vector<std::string> problems = cmp::validateLayout(surface, cmp::toBaseTriangles(domain));
+  return problems.empty() ? "" : problems.front();
+}
+
+/// Point data of the straightened surface: every input array interpolated
+/// with the input location of each new vertex, FeatureId written anew, and
+/// the base-domain coordinates.
+void fillPointData(vtkPointData* points, vtkPointData* input, const cmp::StraightenedNet& straight,
+  const cmp::BaseDomain& domain, const cmp::PatchParameterization& parameterization)
+{
+  const int vertices = straight.net.mesh.vertexCount();
+  // FeatureId marks exactly the landmarks: interpolating it would spread
+  // feature numbers onto the points around them. The base arrays of an input
+  // that was straightened before are replaced below.
+  for (const char* name : { cmp::bridge::kFeatureIdArray, kBaseTriangleArray, kBaseCoordinatesArray })
+    points->CopyFieldOff(name);
+  points->InterpolateAllocate(input, vertices);
+  vtkNew<vtkIdList> ids;
+  double weights[3];
+  for (int v = 0; v < vertices; ++v)
+  {
+    const cmp::SurfacePoint& at = straight.inputPoint[v];
+    ids->Reset();
+    for (int k = 0; k < 3; ++k)
+      if (at.vertex[k] >= 0)
+      {
+        weights[ids->GetNumberOfIds()] = at.weight[k];
+        ids->InsertNextId(at.vertex[k]);
+      }
+    points->InterpolatePoint(input, v, ids, weights);
+  }
+
+  // Same array type as the input's, so readers of FeatureId see no change.
+  vtkDataArray* inputFeatureIds = input->GetArray(cmp::bridge::kFeatureIdArray);
+  auto featureIds = vtk::TakeSmartPointer(inputFeatureIds->NewInstance());
+  featureIds->SetName(cmp::bridge::kFeatureIdArray);
+  featureIds->SetNumberOfComponents(1);
+  featureIds->SetNumberOfTuples(vertices);
+  featureIds->Fill(-1);
+  for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
+    featureIds->SetComponent(straight.net.landmarkVertex[bv], 0, domain.featureIds[bv]);
+  points->AddArray(featureIds);
+
+  vtkNew<vtkIntArray> baseTriangles;
+  baseTriangles->SetName(kBaseTriangleArray);
+  baseTriangles->SetNumberOfValues(vertices);
+  vtkNew<vtkDoubleArray> baseCoordinates;
+  baseCoordinates->SetName(kBaseCoordinatesArray);
+  baseCoordinates->SetNumberOfComponents(3);
+  baseCoordinates->SetNumberOfTuples(vertices);
+  for (int v = 0; v < vertices; ++v)
+  {
+    baseTriangles->SetValue(v, parameterization.baseTriangle[v]);
+    baseCoordinates->SetTypedTuple(v, parameterization.baseCoordinates[v].data());
+  }
+  points->AddArray(baseTriangles);
+  points->AddArray(baseCoordinates);
+}
+
+/// Per-corner texture coordinates cannot be copied to the pieces of a cut
+/// triangle: each new corner gets the input triangle's corner values
+/// combined with the weights of its input location.
+void interpolateCornerTCoords(vtkDataArray* corners, vtkDataArray* inputCorners, const cmp::TriangleMesh& input,
+  const cmp::StraightenedNet& straight)
+{
+  const cmp::EditableMesh& mesh = straight.net.mesh;
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    const int home = straight.inputTriangle[t];
+    const cmp::Triangle& homeCorners = input.triangles[home];
+    double values[6] = { 0, 0, 0, 0, 0, 0 };
+    bool inside = true;
+    for (int c = 0; c < 3 && inside; ++c)
+    {
+      const cmp::SurfacePoint& at = straight.inputPoint[mesh.triangle(t)[c]];
+      for (int k = 0; k < 3 && inside; ++k)
+      {
+        if (at.vertex[k] < 0)
+          continue;
+        const auto corner = std::find(homeCorners.begin(), homeCorners.end(), at.vertex[k]);
+        inside = corner != homeCorners.end();
+        if (inside)
+          for (int uv = 0; uv < 2; ++uv)
+            values[2 * c + uv] +=
+              at.weight[k] * inputCorners->GetComponent(home, 2 * static_cast<int>(corner - homeCorners.begin()) + uv);
+      }
+    }
+    // A corner outside its triangle's input triangle would break the core's
+    // contract; the copied values are then kept rather than extrapolated.
+    if (inside)
+      for (int i = 0; i < 6; ++i)
+        corners->SetComponent(t, i, values[i]);
+  }
+}
+
+/// Cell data of the straightened surface: every input array copied from the
+/// input triangle each triangle lies in, and the new PatchId.
+void fillCellData(vtkCellData* cells, vtkCellData* input, const cmp::TriangleMesh& inputMesh,
+  const cmp::StraightenedNet& straight)
+{
+  const int triangles = straight.net.mesh.triangleCount();
+  // A straight curve may cut an input triangle: its pieces need not stay in
+  // the input triangle's patch.
+  cells->CopyFieldOff(cmp::bridge::kPatchIdArray);
+  cells->CopyAllocate(input, triangles);
+  for (int t = 0; t < triangles; ++t)
+    cells->CopyData(input, straight.inputTriangle[t], t);
+  vtkDataArray* corners = cells->GetArray(cmp::bridge::kCornerTCoordsArray);
+  vtkDataArray* inputCorners = input->GetArray(cmp::bridge::kCornerTCoordsArray);
+  if (corners && inputCorners && corners->GetNumberOfComponents() == 6)
+    interpolateCornerTCoords(corners, inputCorners, inputMesh, straight);
+
+  vtkNew<vtkIntArray> patchIds;
+  patchIds->SetName(cmp::bridge::kPatchIdArray);
+  patchIds->SetNumberOfValues(triangles);
+  for (int t = 0; t < triangles; ++t)
+    patchIds->SetValue(t, straight.net.patchOfTriangle[t]);
+  cells->AddArray(patchIds);
+}
+
+} // namespace
+
+int vtkCMPNetStraightener::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* baseInput = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* surfaceOutput = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* curvesOutput = vtkPolyData::GetData(outputVector, 1);
+  if (!baseInput)
+  {
+    vtkErrorMacro("no base domain: connect L0 (the one the net was traced against) to the second input");
+    return 0;
+  }
+  if (const std::string problem = propertyProblem(this->MaximumSweeps, this->Tolerance, this->SnapTolerance);
+      !problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return 0;
+  }
+  cmp::TriangleMesh mesh;
+  cmp::LandmarkList landmarks;
+  cmp::BaseDomain domain;
+  std::vector<int> patchIds;
+  cmp::Status status = cmp::bridge::toCheckedSurface(input, mesh);
+  if (status.ok())
+    status = cmp::bridge::readLandmarks(input, landmarks);
+  if (status.ok())
+    status = cmp::bridge::toBaseDomain(baseInput, domain, static_cast<int>(landmarks.size()));
+  if (status.ok())
+    status = cmp::bridge::readPatchIds(input, patchIds);
+  // The core only rebuilds a layout that is one; checking first names the
+  // problem in the user's terms (for example L0 from another collection).
+  if (status.ok())
+    if (const std::string problem = layoutProblem(labelledInput(mesh, patchIds, landmarks), domain);
+        !problem.empty())
+      status = cmp::Status::error("the input's PatchId layout is not equivalent to L0: " + problem);
+  cmp::TracedNet traced;
+  if (status.ok())
+    status = cmp::layoutFromPatchIds(mesh, patchIds, landmarks, domain, traced);
+  cmp::StraightenedNet straight;
+  cmp::NetStraightenerReport report;
+  if (status.ok())
+  {
+    cmp::NetStraightenerOptions options;
+    options.maxSweeps = this->MaximumSweeps;
+    options.tolerance = this->Tolerance;
+    options.snapTolerance = this->SnapTolerance;
+    options.progress = [this](double fraction) { this->UpdateProgress(0.8 * fraction); };
+    status = cmp::straightenNet(traced, domain, straight, options, &report);
+  }
+  cmp::PatchParameterization parameterization;
+  if (status.ok())
+    status = cmp::parameterizePatches(straight.net, domain, parameterization);
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< status.message());
+    return 0;
+  }
+  this->UpdateProgress(0.9);
+
+  const std::string problem = layoutProblem(cmp::toLabelledSurface(straight.net, domain), domain);
+  if (!problem.empty())
+    vtkWarningMacro("the straightened net failed the layout check: " << problem);
+  if (parameterization.flippedTriangles > 0)
+    vtkWarningMacro(<< parameterization.flippedTriangles
+                    << " triangles are flipped in their patch's map onto its base triangle");
+
+  vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(straight.net.mesh.toTriangleMesh());
+  fillPointData(surface->GetPointData(), input->GetPointData(), straight, domain, parameterization);
+  fillCellData(surface->GetCellData(), input->GetCellData(), mesh, straight);
+  surfaceOutput->ShallowCopy(surface);
+  curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(straight.net, domain));
+  // Scale-free, like the tracer's NetLengthPerSqrtArea: the area is unchanged.
+  const double lengthPerSqrtArea = report.netLengthAfter / std::sqrt(cmp::surfaceArea(mesh));
+  for (vtkPolyData* output : { surfaceOutput, curvesOutput })
+  {
+    vtkFieldData* field = output->GetFieldData();
+    cmp::bridge::setFieldValue(field, "NetLengthBefore", report.netLengthBefore);
+    cmp::bridge::setFieldValue(field, "NetLengthAfter", report.netLengthAfter);
+    cmp::bridge::setFieldValue(field, "NetLengthPerSqrtAreaAfter", lengthPerSqrtArea);
+    cmp::bridge::setFieldValue(field, "AreaVariationBefore", report.areaVariationBefore);
+    cmp::bridge::setFieldValue(field, "AreaVariationAfter", report.areaVariationAfter);
+    cmp::bridge::setFieldValue(field, "Sweeps", report.sweeps);
+    cmp::bridge::setFieldValue(field, "SkippedStars", report.skippedStars);
+    cmp::bridge::setFieldValue(field, "FlippedTriangles", parameterization.flippedTriangles);
+    cmp::bridge::setFieldValue(field, "NetValid", problem.empty() ? 1 : 0);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkCMPNetStraightener::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaximumSweeps: " << this->MaximumSweeps << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
+}

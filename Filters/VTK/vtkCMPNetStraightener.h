@@ -1,0 +1,79 @@
+#pragma once
+/// \file vtkCMPNetStraightener.h
+/// \brief Straightens a traced patch layout and maps every patch onto its
+///        base triangle (paper Section 2.2, "Edge Straightening").
+
+#include "CMPFiltersModule.h"
+
+#include <vtkPolyDataAlgorithm.h>
+
+/// \brief Replaces the curves of a traced net by straight lines of planar
+///        maps of the landmarks' stars (the paper's edge straightening), then
+///        parameterizes every patch over its base triangle.
+///
+/// Input 0: the Surface output of vtkCMPFeatureNetTracer (cell array
+/// `PatchId`, point array `FeatureId`), or a multiblock of such surfaces
+/// (straightened block by block against the same `L0`). Input 1: the base
+/// domain `L0` the net was traced against.
+///
+/// Output 0: the surface re-triangulated along the straightened curves (the
+/// geometry does not change: new points lie on the input triangles). Every
+/// input point array is interpolated at the new points from the input
+/// vertices around them; `FeatureId` is rewritten (-1 except at the
+/// landmarks, never interpolated); every input cell array is copied from the
+/// input triangle each new triangle lies in (`CornerTCoords` is interpolated
+/// at the new corners instead); `PatchId` holds the new patches. New point
+/// arrays: `BaseTriangle` (the `L0` triangle a point is expressed in) and
+/// `BaseCoordinates` (its barycentric coordinates there, in the order of
+/// that `L0` cell's points). Field arrays: `NetLengthBefore`,
+/// `NetLengthAfter`, `NetLengthPerSqrtAreaAfter`, `AreaVariationBefore`,
+/// `AreaVariationAfter`, `Sweeps`, `SkippedStars`, `FlippedTriangles` and
+/// `NetValid` (1 when the independent layout check passes on the result).
+/// Output 1: the net as polylines, one per `L0` edge, with cell arrays
+/// `BaseEdgeId`, `FeatureIdA` and `FeatureIdB`, and the same field arrays.
+class CMPFILTERS_EXPORT vtkCMPNetStraightener : public vtkPolyDataAlgorithm
+{
+public:
+  /// \brief Standard VTK factory.
+  static vtkCMPNetStraightener* New();
+  vtkTypeMacro(vtkCMPNetStraightener, vtkPolyDataAlgorithm);
+  /// \brief Prints the properties.
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// \brief Connects the base domain `L0` to input port 1.
+  void SetBaseDomainConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+
+  /// \brief At most this many sweeps over all landmarks (default 5; 0 only
+  ///        splits edges so every patch can be parameterized). Not clamped:
+  ///        a negative value is reported when the filter runs.
+  vtkSetMacro(MaximumSweeps, int);
+  /// \brief At most this many sweeps over all landmarks.
+  vtkGetMacro(MaximumSweeps, int);
+
+  /// \brief Stop sweeping when a sweep changes the total net length by less
+  ///        than this fraction (default 0.002; must be >= 0).
+  vtkSetMacro(Tolerance, double);
+  /// \brief Relative net length change below which sweeping stops.
+  vtkGetMacro(Tolerance, double);
+
+  /// \brief A straight curve that crosses a mesh edge within this fraction
+  ///        of the edge's length from a vertex goes through that vertex, so
+  ///        no sliver triangles are cut (default 0.1; must be in [0, 0.5)).
+  vtkSetMacro(SnapTolerance, double);
+  /// \brief Fraction of an edge's length within which curves snap to vertices.
+  vtkGetMacro(SnapTolerance, double);
+
+protected:
+  vtkCMPNetStraightener();
+  ~vtkCMPNetStraightener() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkCMPNetStraightener(const vtkCMPNetStraightener&) = delete;
+  void operator=(const vtkCMPNetStraightener&) = delete;
+
+  int MaximumSweeps = 5;
+  double Tolerance = 0.002;
+  double SnapTolerance = 0.1;
+};

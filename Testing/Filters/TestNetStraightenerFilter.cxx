@@ -1,0 +1,407 @@
+#include "FilterTestUtilities.h"
+#include "vtkCMPBaseDomainBuilder.h"
+#include "vtkCMPFeatureNetTracer.h"
+#include "vtkCMPNetStraightener.h"
+#include "vtkCMPSurfaceReader.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCell.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkIntArray.h>
+#include <vtkMassProperties.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <set>
+
+using namespace cmp::test;
+
+namespace
+{
+
+std::string examplesDir()
+{
+  return CMP_EXAMPLES_DIR;
+}
+
+vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)
+{
+  vtkNew<vtkCMPBaseDomainBuilder> builder;
+  builder->SetInputData(surface);
+  EXPECT_TRUE(run(builder).succeeded);
+  return builder->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> traced(vtkPolyData* surface, vtkPolyData* l0)
+{
+  vtkNew<vtkCMPFeatureNetTracer> tracer;
+  tracer->SetInputData(0, surface);
+  tracer->SetInputData(1, l0);
+  const RunResult result = run(tracer);
+  EXPECT_TRUE(result.succeeded) << result.error;
+  return tracer->GetOutput(0);
+}
+
+double areaOf(vtkPolyData* surface)
+{
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(surface);
+  mass->Update();
+  return mass->GetSurfaceArea();
+}
+
+double fieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetComponent(0, 0) : NAN;
+}
+
+double diagonalOf(vtkPolyData* surface)
+{
+  double bounds[6];
+  surface->GetBounds(bounds);
+  return std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) +
+    std::pow(bounds[5] - bounds[4], 2));
+}
+
+/// Adds what the straightener must carry through, all exactly checkable on
+/// the output: point array X (x coordinate: linear, so interpolation
+/// reproduces it) and cell array InputCellId (the triangle's id).
+void addProbeArrays(vtkPolyData* surface)
+{
+  vtkNew<vtkDoubleArray> x;
+  x->SetName("X");
+  for (vtkIdType v = 0; v < surface->GetNumberOfPoints(); ++v)
+    x->InsertNextValue(surface->GetPoint(v)[0]);
+  surface->GetPointData()->AddArray(x);
+  vtkNew<vtkIntArray> cellIds;
+  cellIds->SetName("InputCellId");
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+    cellIds->InsertNextValue(static_cast<int>(c));
+  surface->GetCellData()->AddArray(cellIds);
+}
+
+/// Per-corner texture coordinates (u, v) = (x, y) of each corner, added to
+/// the tracer's output: the straightener must interpolate them at new
+/// corners, not copy them.
+void addCornerTCoords(vtkPolyData* surface)
+{
+  vtkNew<vtkDoubleArray> corners;
+  corners->SetName("CornerTCoords");
+  corners->SetNumberOfComponents(6);
+  corners->SetNumberOfTuples(surface->GetNumberOfCells());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    for (int k = 0; k < 3; ++k)
+    {
+      corners->SetComponent(c, 2 * k, surface->GetPoint(ids->GetId(k))[0]);
+      corners->SetComponent(c, 2 * k + 1, surface->GetPoint(ids->GetId(k))[1]);
+    }
+  }
+  surface->GetCellData()->AddArray(corners);
+}
+
+/// Checks everything the straightener promises about its output for
+/// `original` (the landmarked surface with probe arrays) traced against
+/// `l0` into `input`.
+void expectStraightened(vtkCMPNetStraightener* straightener, vtkPolyData* original, vtkPolyData* input,
+  vtkPolyData* l0, const std::string& what)
+{
+  vtkPolyData* surface = straightener->GetOutput(0);
+  vtkPolyData* curves = straightener->GetOutput(1);
+  const int baseVertices = static_cast<int>(l0->GetNumberOfPoints());
+  const int baseTriangles = static_cast<int>(l0->GetNumberOfCells());
+  const double tolerance = 1e-9 * diagonalOf(original);
+
+  EXPECT_EQ(fieldValue(surface, "NetValid"), 1.0) << what;
+  EXPECT_EQ(fieldValue(surface, "FlippedTriangles"), 0.0) << what;
+  EXPECT_EQ(fieldValue(curves, "NetValid"), 1.0) << what;
+  EXPECT_GE(fieldValue(surface, "Sweeps"), 1.0) << what;
+  EXPECT_LE(fieldValue(surface, "NetLengthAfter"), 1.02 * fieldValue(surface, "NetLengthBefore")) << what;
+  EXPECT_NEAR(fieldValue(surface, "NetLengthPerSqrtAreaAfter"),
+    fieldValue(surface, "NetLengthAfter") / std::sqrt(areaOf(original)), 1e-9)
+    << what;
+  for (const char* name : { "NetLengthBefore", "AreaVariationAfter", "SkippedStars" })
+    EXPECT_FALSE(std::isnan(fieldValue(surface, name))) << what << ": " << name;
+  EXPECT_NEAR(areaOf(surface), areaOf(original), 1e-9 * areaOf(original)) << what;
+
+  // Point data: the probe interpolated exactly, FeatureId only at landmarks
+  // (at the input's landmark positions), base coordinates in their triangle.
+  vtkPointData* points = surface->GetPointData();
+  vtkDataArray* x = points->GetArray("X");
+  vtkDataArray* featureIds = points->GetArray("FeatureId");
+  vtkDataArray* baseTriangle = points->GetArray("BaseTriangle");
+  vtkDataArray* baseCoordinates = points->GetArray("BaseCoordinates");
+  ASSERT_NE(x, nullptr) << what;
+  ASSERT_NE(featureIds, nullptr) << what;
+  ASSERT_NE(baseTriangle, nullptr) << what;
+  ASSERT_NE(baseCoordinates, nullptr) << what;
+  ASSERT_EQ(baseCoordinates->GetNumberOfComponents(), 3) << what;
+  vtkDataArray* inputFeatureIds = input->GetPointData()->GetArray("FeatureId");
+  std::vector<vtkIdType> landmarkOf(baseVertices, -1);
+  for (vtkIdType v = 0; v < input->GetNumberOfPoints(); ++v)
+    if (inputFeatureIds->GetComponent(v, 0) >= 0)
+      landmarkOf[static_cast<int>(inputFeatureIds->GetComponent(v, 0))] = v;
+  vtkDataArray* l0FeatureIds = l0->GetPointData()->GetArray("FeatureId");
+  vtkNew<vtkIdList> corners;
+  int landmarks = 0, badX = 0, badSum = 0, badRange = 0, badLandmark = 0;
+  for (vtkIdType v = 0; v < surface->GetNumberOfPoints(); ++v)
+  {
+    badX += std::abs(x->GetComponent(v, 0) - surface->GetPoint(v)[0]) > tolerance;
+    const int base = static_cast<int>(baseTriangle->GetComponent(v, 0));
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      sum += baseCoordinates->GetComponent(v, k);
+      badRange += baseCoordinates->GetComponent(v, k) < -1e-12;
+    }
+    badSum += std::abs(sum - 1.0) > 1e-9;
+    badRange += base < 0 || base >= baseTriangles;
+    const double feature = featureIds->GetComponent(v, 0);
+    if (feature < 0)
+    {
+      badLandmark += feature != -1;
+      continue;
+    }
+    ++landmarks;
+    // Same place as the input's landmark, and coordinate 1 at the corner of
+    // its base triangle that is this feature (the L0 cell's point order).
+    const double* p = surface->GetPoint(v);
+    const double* q = input->GetPoint(landmarkOf[static_cast<int>(feature)]);
+    badLandmark += std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) > tolerance;
+    if (base >= 0 && base < baseTriangles)
+    {
+      l0->GetCellPoints(base, corners);
+      for (int k = 0; k < 3; ++k)
+        badLandmark += (l0FeatureIds->GetComponent(corners->GetId(k), 0) == feature) !=
+          (baseCoordinates->GetComponent(v, k) == 1.0);
+    }
+  }
+  EXPECT_EQ(landmarks, baseVertices) << what;
+  EXPECT_EQ(badX, 0) << what << ": points where X is not x";
+  EXPECT_EQ(badSum, 0) << what << ": BaseCoordinates not summing to 1";
+  EXPECT_EQ(badRange, 0) << what << ": BaseTriangle or BaseCoordinates out of range";
+  EXPECT_EQ(badLandmark, 0) << what << ": FeatureId or landmark coordinates wrong";
+
+  // Cell data: PatchId covers L0; every triangle lies in the original
+  // triangle its InputCellId names; corner texture coordinates are (x, y).
+  vtkCellData* cells = surface->GetCellData();
+  vtkDataArray* patchIds = cells->GetArray("PatchId");
+  vtkDataArray* inputCellIds = cells->GetArray("InputCellId");
+  vtkDataArray* cornerTCoords = cells->GetArray("CornerTCoords");
+  ASSERT_NE(patchIds, nullptr) << what;
+  ASSERT_NE(inputCellIds, nullptr) << what;
+  std::set<int> patches;
+  int outside = 0, badBase = 0, badCorner = 0;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    const int patch = static_cast<int>(patchIds->GetComponent(c, 0));
+    patches.insert(patch);
+    surface->GetCellPoints(c, corners);
+    double centroid[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType v = corners->GetId(k);
+      for (int i = 0; i < 3; ++i)
+        centroid[i] += surface->GetPoint(v)[i] / 3.0;
+      // A vertex is expressed in the lowest-numbered patch around it.
+      badBase += baseTriangle->GetComponent(v, 0) > patch;
+      if (cornerTCoords)
+        badCorner += std::abs(cornerTCoords->GetComponent(c, 2 * k) - surface->GetPoint(v)[0]) > tolerance ||
+          std::abs(cornerTCoords->GetComponent(c, 2 * k + 1) - surface->GetPoint(v)[1]) > tolerance;
+    }
+    double closest[3], pcoords[3], weights[3], distance2;
+    int subId;
+    original->GetCell(static_cast<vtkIdType>(inputCellIds->GetComponent(c, 0)))
+      ->EvaluatePosition(centroid, closest, subId, pcoords, distance2, weights);
+    outside += std::sqrt(distance2) > tolerance;
+  }
+  EXPECT_EQ(patches.size(), static_cast<std::size_t>(baseTriangles)) << what;
+  EXPECT_EQ(*patches.begin(), 0) << what;
+  EXPECT_EQ(outside, 0) << what << ": triangles outside their InputCellId's triangle";
+  EXPECT_EQ(badBase, 0) << what << ": BaseTriangle above the patch of a triangle using the point";
+  EXPECT_EQ(badCorner, 0) << what << ": CornerTCoords not interpolated at the corners";
+
+  EXPECT_EQ(curves->GetNumberOfLines(), 3 * baseVertices - 6) << what;
+  for (const char* name : { "BaseEdgeId", "FeatureIdA", "FeatureIdB" })
+    EXPECT_NE(curves->GetCellData()->GetArray(name), nullptr) << what << ": " << name;
+}
+
+} // namespace
+
+TEST(NetStraightenerFilter, StraightensTheShippedExamplesAgainstL0FromBlob)
+{
+  const std::string folder = examplesDir() + "/";
+  vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(readLandmarked(folder + "blob.off", folder + "blob.vts"));
+  vtkNew<vtkCMPNetStraightener> straightener;
+  EXPECT_EQ(straightener->GetMaximumSweeps(), 5);
+  EXPECT_EQ(straightener->GetTolerance(), 0.002);
+  EXPECT_EQ(straightener->GetSnapTolerance(), 0.1);
+  int progressEvents = 0;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progressEvents);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  straightener->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  vtkSmartPointer<vtkPolyData> input;
+  for (const auto& [mesh, landmarks] : { std::pair{ "blob.off", "blob.vts" }, std::pair{ "capsule.obj", "capsule.pinned" },
+         std::pair{ "peanut.off", "peanut.csv" } })
+  {
+    vtkSmartPointer<vtkPolyData> model = readLandmarked(folder + mesh, folder + landmarks);
+    addProbeArrays(model);
+    input = traced(model, l0);
+    addCornerTCoords(input);
+    straightener->SetInputData(0, input);
+    straightener->SetInputData(1, l0);
+    progressEvents = 0;
+    const RunResult result = run(straightener);
+    ASSERT_TRUE(result.succeeded) << mesh << ": " << result.error;
+    EXPECT_GT(progressEvents, 2) << mesh;
+    expectStraightened(straightener, model, input, l0, mesh);
+  }
+
+  // The straightener's output is itself a valid input: straightening again
+  // keeps everything valid (and replaces the base arrays).
+  vtkNew<vtkCMPNetStraightener> again;
+  again->SetInputConnection(0, straightener->GetOutputPort(0));
+  again->SetInputData(1, l0);
+  ASSERT_TRUE(run(again).succeeded) << run(again).error;
+  EXPECT_EQ(fieldValue(again->GetOutput(0), "NetValid"), 1.0);
+  EXPECT_EQ(fieldValue(again->GetOutput(0), "FlippedTriangles"), 0.0);
+  EXPECT_EQ(again->GetOutput(0)->GetPointData()->GetArray("BaseCoordinates")->GetNumberOfTuples(),
+    again->GetOutput(0)->GetNumberOfPoints());
+}
+
+TEST(NetStraightenerFilter, StraightensModel387AgainstL0From381AndCarriesArraysThrough)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const std::string folder = sharedDataDir() + "/shrec07-fourleg/";
+  vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(readLandmarked(folder + "381.off", folder + "381.vts"));
+  vtkSmartPointer<vtkPolyData> horse = readLandmarked(folder + "387.off", folder + "387.vts");
+  addProbeArrays(horse);
+  vtkSmartPointer<vtkPolyData> input = traced(horse, l0);
+  addCornerTCoords(input);
+
+  vtkNew<vtkCMPNetStraightener> straightener;
+  straightener->SetInputData(0, input);
+  straightener->SetInputData(1, l0);
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult result = run(straightener);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(result.succeeded) << result.error;
+  expectStraightened(straightener, horse, input, l0, "387");
+  vtkPolyData* surface = straightener->GetOutput(0);
+  // Before and after are not swapped: on this model straightening evens
+  // out the patch areas (not a promise on every shape: the elongated peanut
+  // against the blob's L0 gets less even).
+  EXPECT_LT(fieldValue(surface, "AreaVariationAfter"), fieldValue(surface, "AreaVariationBefore"));
+  std::cout << "387: " << input->GetNumberOfPoints() << " -> " << surface->GetNumberOfPoints()
+            << " points, net length " << fieldValue(surface, "NetLengthBefore") << " -> "
+            << fieldValue(surface, "NetLengthAfter") << ", area variation "
+            << fieldValue(surface, "AreaVariationBefore") << " -> " << fieldValue(surface, "AreaVariationAfter")
+            << ", sweeps " << fieldValue(surface, "Sweeps") << ", " << seconds << " s\n";
+}
+
+TEST(NetStraightenerFilter, ReportsBadInput)
+{
+  const std::string folder = examplesDir() + "/";
+  vtkSmartPointer<vtkPolyData> blob = readLandmarked(folder + "blob.off", folder + "blob.vts");
+  vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(blob);
+  vtkSmartPointer<vtkPolyData> input = traced(blob, l0);
+
+  vtkNew<vtkCMPNetStraightener> straightener;
+  const auto expectError = [&](vtkPolyData* surface, vtkPolyData* domain, const std::string& fragment)
+  {
+    straightener->SetInputData(0, surface);
+    straightener->SetInputData(1, domain);
+    const RunResult result = run(straightener);
+    EXPECT_FALSE(result.succeeded) << fragment;
+    EXPECT_NE(result.error.find(fragment), std::string::npos) << result.error;
+    EXPECT_EQ(straightener->GetOutput(0)->GetNumberOfPoints(), 0) << fragment;
+    EXPECT_EQ(straightener->GetOutput(1)->GetNumberOfPoints(), 0) << fragment;
+  };
+  // The traced blob itself works.
+  straightener->SetInputData(0, input);
+  straightener->SetInputData(1, l0);
+  ASSERT_TRUE(run(straightener).succeeded) << run(straightener).error;
+
+  // Not the tracer's output: no PatchId.
+  expectError(blob, l0, "missing cell array 'PatchId'");
+
+  vtkNew<vtkPolyData> noLandmarks;
+  noLandmarks->DeepCopy(input);
+  noLandmarks->GetPointData()->RemoveArray("FeatureId");
+  expectError(noLandmarks, l0, "missing point array 'FeatureId'");
+
+  vtkNew<vtkPolyData> empty;
+  expectError(empty, l0, "empty surface");
+
+  // L0 with two opposite landmarks swapped: a valid base domain (6 points,
+  // 8 triangles) that the traced layout is not equivalent to.
+  vtkNew<vtkPolyData> mirrored;
+  mirrored->DeepCopy(l0);
+  vtkDataArray* l0Ids = mirrored->GetPointData()->GetArray("FeatureId");
+  for (vtkIdType p = 0; p < l0Ids->GetNumberOfTuples(); ++p)
+  {
+    const double f = l0Ids->GetComponent(p, 0);
+    l0Ids->SetComponent(p, 0, f == 0 ? 1 : f == 1 ? 0 : f);
+  }
+  expectError(input, mirrored, "the input's PatchId layout is not equivalent to L0: patch");
+
+  // L0 of another collection: 4 instead of 6 landmarks.
+  vtkNew<vtkCMPSurfaceReader> tetraReader;
+  tetraReader->SetFileName(
+    writeTempFile("straightener-tetra.off", "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n")
+      .c_str());
+  ASSERT_TRUE(run(tetraReader).succeeded);
+  setFeatureIds(tetraReader->GetOutput(), { 0, 1, 2, 3 });
+  expectError(input, tetraReader->GetOutput(), "base domain has 4 vertices but the surface has 6 landmarks");
+
+  // A PatchId that no longer encloses patches bounded by curves.
+  vtkNew<vtkPolyData> relabelled;
+  relabelled->DeepCopy(input);
+  vtkDataArray* patchIds = relabelled->GetCellData()->GetArray("PatchId");
+  patchIds->SetComponent(0, 0, patchIds->GetComponent(0, 0) == 0 ? 1 : 0);
+  expectError(relabelled, l0, "the input's PatchId layout is not equivalent to L0");
+
+  vtkNew<vtkPolyData> outOfRange;
+  outOfRange->DeepCopy(input);
+  outOfRange->GetCellData()->GetArray("PatchId")->SetComponent(3, 0, 8);
+  expectError(outOfRange, l0, "triangle 3 has PatchId 8");
+
+  // Properties out of range are reported, not clamped.
+  straightener->SetMaximumSweeps(-1);
+  expectError(input, l0, "MaximumSweeps must be 0 or more (it is -1)");
+  straightener->SetMaximumSweeps(5);
+  straightener->SetTolerance(-0.5);
+  expectError(input, l0, "Tolerance must be a finite number >= 0");
+  straightener->SetTolerance(0.002);
+  straightener->SetSnapTolerance(0.5);
+  expectError(input, l0, "SnapTolerance must be at least 0 and below 0.5 (it is 0.5)");
+  straightener->SetSnapTolerance(0.1);
+
+  // No base domain at all.
+  straightener->SetInputData(0, input);
+  straightener->SetInputConnection(1, nullptr);
+  const RunResult noDomain = run(straightener);
+  EXPECT_FALSE(noDomain.succeeded);
+
+  // Zero sweeps only prepares the patches: still a valid, flip-free result.
+  straightener->SetMaximumSweeps(0);
+  straightener->SetInputData(1, l0);
+  ASSERT_TRUE(run(straightener).succeeded) << run(straightener).error;
+  EXPECT_EQ(fieldValue(straightener->GetOutput(0), "Sweeps"), 0.0);
+  EXPECT_EQ(fieldValue(straightener->GetOutput(0), "NetValid"), 1.0);
+  EXPECT_EQ(fieldValue(straightener->GetOutput(0), "FlippedTriangles"), 0.0);
+}
