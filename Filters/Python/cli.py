@@ -2,7 +2,9 @@
 collection of landmarked surfaces and write the results and a JSON report.
 
 Stages per model: read, landmarks, check, check against the base domain,
-trace the patch layout (NAME.net.vtp, NAME.curves.vtp).
+trace the patch layout (NAME.net.vtp, NAME.curves.vtp), straighten it and
+map every patch onto its base triangle (NAME.param.vtp,
+NAME.straight-curves.vtp).
 
 Usage:
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
@@ -10,7 +12,7 @@ Usage:
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others; the exit status is 1 if any
-model failed and 2 if the base domain could not be made.
+model failed, 2 for a usage error and 3 if the base domain could not be made.
 """
 
 import argparse
@@ -162,6 +164,38 @@ def trace_net(model, domain, output_folder):
     }
     if not model.report["net"]["valid"]:
         raise StageError("the traced net failed the layout check")
+    return surface
+
+
+def straighten_net(model, domain, traced, output_folder):
+    """NetStraightener on the tracer's surface: writes NAME.param.vtp (the
+    re-triangulated surface with PatchId, BaseTriangle and BaseCoordinates)
+    and NAME.straight-curves.vtp (the straightened curves)."""
+    straightener = cmp.vtkCMPNetStraightener()
+    straightener.SetInputData(0, traced)
+    straightener.SetInputData(1, domain)
+    surface = model.timed("straighten", _run, straightener)
+    curves = straightener.GetOutputDataObject(1)
+    write_polydata(surface, os.path.join(output_folder, model.name + ".param.vtp"))
+    write_polydata(curves, os.path.join(output_folder, model.name + ".straight-curves.vtp"))
+    field = surface.GetFieldData()
+    value = lambda name: field.GetArray(name).GetValue(0)
+    model.report["straighten"] = {
+        "net_length_before": round(value("NetLengthBefore"), 6),
+        "net_length_after": round(value("NetLengthAfter"), 6),
+        "net_length_per_sqrt_area_after": round(value("NetLengthPerSqrtAreaAfter"), 4),
+        "area_variation_before": round(value("AreaVariationBefore"), 6),
+        "area_variation_after": round(value("AreaVariationAfter"), 6),
+        "sweeps": int(value("Sweeps")),
+        "skipped_stars": int(value("SkippedStars")),
+        # Not a failure: the parameterization is still written, and the
+        # count says where it is not bijective.
+        "flipped_triangles": int(value("FlippedTriangles")),
+        "net_valid": bool(value("NetValid")),
+        "vertices": surface.GetNumberOfPoints(),
+    }
+    if not model.report["straighten"]["net_valid"]:
+        raise StageError("the straightened net failed the layout check")
 
 
 def describe_base_domain(domain, source):
@@ -268,7 +302,9 @@ def main(argv=None):
         try:
             check_against_base_domain(model, domain)
             print("%s: tracing the net" % model.name, flush=True)
-            trace_net(model, domain, args.output)
+            traced = trace_net(model, domain, args.output)
+            print("%s: straightening the net" % model.name, flush=True)
+            straighten_net(model, domain, traced, args.output)
             model.report["status"] = "ok"
         except StageError as error:
             model.fail(error)
@@ -294,10 +330,13 @@ def print_summary(models, report):
         print("base domain: %d vertices, %d triangles, %d edges (%s)"
               % (domain["vertices"], domain["triangles"], domain["edges"], domain["source"]))
     width = max(len(m.name) for m in models)
-    print("%-*s  %8s  %8s  %10s  %s" % (width, "model", "vertices", "seconds", "net/sqrt(A)", "result"))
+    print("%-*s  %8s  %8s  %11s  %12s  %s"
+          % (width, "model", "vertices", "seconds", "net/sqrt(A)", "straightened", "result"))
     for model in models:
         r = model.report
         seconds = sum(r["seconds"].values())
         result = "ok" if r.get("status") == "ok" else "FAILED: " + r.get("error", "")
         net = r.get("net", {}).get("length_per_sqrt_area", "-")
-        print("%-*s  %8s  %8.3f  %10s  %s" % (width, model.name, r.get("vertices", "-"), seconds, net, result))
+        straight = r.get("straighten", {}).get("net_length_per_sqrt_area_after", "-")
+        print("%-*s  %8s  %8.3f  %11s  %12s  %s"
+              % (width, model.name, r.get("vertices", "-"), seconds, net, straight, result))
