@@ -97,17 +97,23 @@ public:
   {
     // Start from a fresh mesh so that triangle provenance refers to the
     // traced surface, not to whatever the tracer started from.
-    net_ = traced;
     if (Status s = net_.mesh.build(traced.mesh.toTriangleMesh()); !s.ok())
       return s;
+    net_.baseEdges = traced.baseEdges;
+    net_.leftTriangle = traced.leftTriangle;
+    net_.rightTriangle = traced.rightTriangle;
+    net_.curves = traced.curves;
+    net_.landmarkVertex = traced.landmarkVertex;
     if (Status s = labelPatches(net_); !s.ok())
       return s;
     out_.inputPoint.resize(net_.mesh.vertexCount());
     for (int v = 0; v < net_.mesh.vertexCount(); ++v)
       out_.inputPoint[v] = SurfacePoint::at(v);
-    buildTriangle_.resize(net_.mesh.triangleCount());
+    // Between rebuilds this maps the triangles the mesh was built from (what
+    // `mesh.inputTriangle()` returns) to the input's triangles.
+    out_.inputTriangle.resize(net_.mesh.triangleCount());
     for (int t = 0; t < net_.mesh.triangleCount(); ++t)
-      buildTriangle_[t] = t;
+      out_.inputTriangle[t] = t;
     const int patchCount = domain_.mesh.triangleCount();
     report_.netLengthBefore = netLength(net_);
     report_.areaVariationBefore = areaVariation(patchAreas(net_, patchCount));
@@ -211,25 +217,11 @@ private:
   /// next star map has no degenerate triangle.
   void makeRoomAround(const std::vector<int>& ring)
   {
-    std::vector<std::pair<int, int>> crowded;
+    std::vector<int> curveVertices;
     for (int e : ring)
-      for (int u : net_.curves[e])
-      {
-        const int first = net_.mesh.outgoing(u);
-        int h = first;
-        do
-        {
-          if (net_.mesh.tag(h) < 0 && marked(net_.mesh.to(h)))
-            crowded.emplace_back(u, net_.mesh.to(h));
-          h = net_.mesh.nextAroundVertex(h);
-        } while (h != first);
-      }
-    for (const auto& [u, x] : crowded)
-    {
-      const int h = net_.mesh.findHalfedge(u, x);
-      if (h >= 0 && net_.mesh.tag(h) < 0)
-        split(h, 0.5);
-    }
+      curveVertices.insert(curveVertices.end(), net_.curves[e].begin(), net_.curves[e].end());
+    marks_.resize(net_.mesh.vertexCount(), 0);
+    splitEdgesBetweenCurves(net_.mesh, curveVertices, marks_, [this](int h) { split(h, 0.5); });
   }
 
   /// Triangles of the patches around `center`.
@@ -270,23 +262,8 @@ private:
 
     // Local copy of the region; boundary rows are the polygon's points.
     local_.assign(net_.mesh.vertexCount(), -1);
-    TriangleMesh star;
     std::vector<int> global;
-    for (int t : region_)
-    {
-      Triangle tri = net_.mesh.triangle(t);
-      for (int& v : tri)
-      {
-        if (local_[v] < 0)
-        {
-          local_[v] = static_cast<int>(global.size());
-          global.push_back(v);
-          star.points.push_back(net_.mesh.point(v));
-        }
-        v = local_[v];
-      }
-      star.triangles.push_back(tri);
-    }
+    const TriangleMesh star = extractTriangles(net_.mesh, region_, local_, global);
     std::vector<int> fixedRow(global.size(), -1);
     std::vector<Vec2> fixedPoints;
     double angle = 0.0;
@@ -294,17 +271,14 @@ private:
     {
       const double nextAngle = angle + kTwoPi * linkLength[k] / total;
       const Vec2 a(std::cos(angle), std::sin(angle)), b(std::cos(nextAngle), std::sin(nextAngle));
-      double walked = 0.0;
+      const std::vector<double> along = arcLengthParameters(net_.mesh, link[k]);
       for (std::size_t i = 0; i + 1 < link[k].size(); ++i) // the last point starts the next curve
       {
-        if (i > 0)
-          walked += (net_.mesh.point(link[k][i]) - net_.mesh.point(link[k][i - 1])).norm();
         const int v = local_[link[k][i]];
         if (v < 0)
           return false;
-        const double s = linkLength[k] > 0.0 ? walked / linkLength[k] : 0.0;
         fixedRow[v] = static_cast<int>(fixedPoints.size());
-        fixedPoints.push_back((1.0 - s) * a + s * b);
+        fixedPoints.push_back((1.0 - along[i]) * a + along[i] * b);
       }
       angle = nextAngle;
     }
@@ -496,44 +470,10 @@ private:
   /// Flood-fills the region's patches from the new curves.
   bool relabelRegion(const std::vector<int>& ring)
   {
-    EditableMesh& mesh = net_.mesh;
     for (int t : region_)
       net_.patchOfTriangle[t] = -1;
-    std::vector<int> stack;
-    const auto seed = [&](int t, int label)
-    {
-      if (net_.patchOfTriangle[t] < 0)
-      {
-        net_.patchOfTriangle[t] = label;
-        stack.push_back(t);
-      }
-      return net_.patchOfTriangle[t] == label;
-    };
-    for (int e : ring)
-    {
-      const auto& curve = net_.curves[e];
-      for (std::size_t i = 0; i + 1 < curve.size(); ++i)
-      {
-        const int h = mesh.findHalfedge(curve[i], curve[i + 1]);
-        if (!seed(EditableMesh::triangleOf(h), net_.leftTriangle[e]) ||
-          !seed(EditableMesh::triangleOf(mesh.opposite(h)), net_.rightTriangle[e]))
-          return false;
-      }
-    }
-    while (!stack.empty())
-    {
-      const int t = stack.back();
-      stack.pop_back();
-      for (int h = 3 * t; h < 3 * t + 3; ++h)
-      {
-        if (mesh.tag(h) >= 0)
-          continue;
-        const int neighbour = EditableMesh::triangleOf(mesh.opposite(h));
-        if (!inRegion_[neighbour] || !seed(neighbour, net_.patchOfTriangle[t]))
-          return false;
-      }
-    }
-    return std::none_of(region_.begin(), region_.end(), [&](int t) { return net_.patchOfTriangle[t] < 0; });
+    return floodFillPatches(net_, ring, &inRegion_).ok() &&
+      std::none_of(region_.begin(), region_.end(), [&](int t) { return net_.patchOfTriangle[t] < 0; });
   }
 
   void mark(int v)
@@ -664,21 +604,13 @@ private:
   /// patch (what a bijective per-patch map needs).
   void makeRoomBetweenCurves()
   {
-    std::vector<char> occupied = occupiedVertices();
-    std::vector<std::pair<int, int>> crowded;
-    for (int h = 0; h < net_.mesh.halfedgeCount(); ++h)
-    {
-      const int u = net_.mesh.from(h), x = net_.mesh.to(h);
-      if (u < x && occupied[u] && occupied[x] && net_.mesh.tag(h) < 0)
-        crowded.emplace_back(u, x);
-    }
+    const std::vector<char> occupied = occupiedVertices();
+    std::vector<int> curveVertices;
+    for (int v = 0; v < net_.mesh.vertexCount(); ++v)
+      if (occupied[v])
+        curveVertices.push_back(v);
     inRegion_.assign(net_.mesh.triangleCount(), 0);
-    for (const auto& [u, x] : crowded)
-    {
-      const int h = net_.mesh.findHalfedge(u, x);
-      if (h >= 0 && net_.mesh.tag(h) < 0)
-        split(h, 0.5);
-    }
+    splitEdgesBetweenCurves(net_.mesh, curveVertices, occupied, [this](int h) { split(h, 0.5); });
   }
 
   /// Drops removed vertices and triangles, renumbers everything and
@@ -707,7 +639,7 @@ private:
       }
       compact.triangles.push_back(tri);
       patch.push_back(net_.patchOfTriangle[t]);
-      inputTriangle.push_back(buildTriangle_[mesh.inputTriangle(t)]);
+      inputTriangle.push_back(out_.inputTriangle[mesh.inputTriangle(t)]);
     }
     for (auto& curve : net_.curves)
       for (int& v : curve)
@@ -717,12 +649,10 @@ private:
     if (Status s = net_.mesh.build(compact); !s.ok())
       return Status::error("internal error after straightening: " + s.message());
     out_.inputPoint = std::move(points);
-    buildTriangle_ = inputTriangle;
     out_.inputTriangle = std::move(inputTriangle);
-    const std::vector<int> labels = patch;
     if (Status s = labelPatches(net_); !s.ok())
       return s;
-    if (net_.patchOfTriangle != labels)
+    if (net_.patchOfTriangle != patch)
       return Status::error("internal error: straightening changed the patches");
     marks_.assign(net_.mesh.vertexCount(), 0);
     return {};
@@ -734,7 +664,6 @@ private:
   TracedNet& net_;
   NetStraightenerReport& report_;
   BaseTopology base_;
-  std::vector<int> buildTriangle_; // input triangle of each triangle the mesh was built with
   std::vector<int> region_;        // triangles of the current star
   std::vector<char> inRegion_;
   std::vector<int> local_;

@@ -410,28 +410,13 @@ private:
   /// `vertices`, so that every gap between curves holds a free vertex.
   void makeRoom(const std::vector<int>& vertices)
   {
-    std::vector<std::pair<int, int>> crowded;
-    for (int u : vertices)
-    {
-      const int first = net_.mesh.outgoing(u);
-      int h = first;
-      do
+    report_.splitEdges += splitEdgesBetweenCurves(net_.mesh, vertices, occupied_,
+      [this](int h)
       {
-        if (occupied_[net_.mesh.to(h)] && net_.mesh.tag(h) < 0)
-          crowded.emplace_back(u, net_.mesh.to(h));
-        h = net_.mesh.nextAroundVertex(h);
-      } while (h != first);
-    }
-    for (const auto& [u, x] : crowded)
-    {
-      const int h = net_.mesh.findHalfedge(u, x); // indices move as edges split
-      if (h < 0 || net_.mesh.tag(h) >= 0)
-        continue;
-      net_.mesh.splitEdge(h);
-      coordinates_.appendInterpolated(u, x, 0.5);
-      occupied_.push_back(0);
-      ++report_.splitEdges;
-    }
+        coordinates_.appendInterpolated(net_.mesh.from(h), net_.mesh.to(h), 0.5);
+        net_.mesh.splitEdge(h);
+        occupied_.push_back(0);
+      });
   }
 
   const BaseDomain& domain_;

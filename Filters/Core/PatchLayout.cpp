@@ -50,8 +50,10 @@ int BaseTopology::edgeBetween(int a, int b) const
 Status labelPatches(TracedNet& net)
 {
   EditableMesh& mesh = net.mesh;
+  std::vector<int> allEdges(net.curves.size());
   for (int e = 0; e < static_cast<int>(net.curves.size()); ++e)
   {
+    allEdges[e] = e;
     const auto& curve = net.curves[e];
     for (std::size_t i = 0; i + 1 < curve.size(); ++i)
     {
@@ -62,25 +64,43 @@ Status labelPatches(TracedNet& net)
       mesh.setTag(mesh.opposite(h), e);
     }
   }
+  net.patchOfTriangle.assign(mesh.triangleCount(), -1);
+  if (Status s = floodFillPatches(net, allEdges); !s.ok())
+    return s;
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    if (net.patchOfTriangle[t] < 0 && !mesh.isRemoved(t))
+      return Status::error("internal error: some triangles belong to no patch");
+  return {};
+}
+
+Status floodFillPatches(TracedNet& net, const std::vector<int>& seedEdges, const std::vector<char>* allowed)
+{
+  const EditableMesh& mesh = net.mesh;
   auto& patch = net.patchOfTriangle;
-  patch.assign(mesh.triangleCount(), -1);
   std::vector<int> stack;
-  const auto seed = [&](int t, int label)
+  const auto label = [&](int t, int value)
   {
     if (patch[t] < 0)
     {
-      patch[t] = label;
+      patch[t] = value;
       stack.push_back(t);
     }
+    return patch[t] == value;
   };
-  for (int e = 0; e < static_cast<int>(net.curves.size()); ++e)
+  const auto clash = [&](int t, int u)
+  {
+    return Status::error("internal error: patches " + std::to_string(patch[t]) + " and " + std::to_string(patch[u]) +
+      " touch away from a curve");
+  };
+  for (int e : seedEdges)
   {
     const auto& curve = net.curves[e];
     for (std::size_t i = 0; i + 1 < curve.size(); ++i)
     {
       const int h = mesh.findHalfedge(curve[i], curve[i + 1]);
-      seed(EditableMesh::triangleOf(h), net.leftTriangle[e]);
-      seed(EditableMesh::triangleOf(mesh.opposite(h)), net.rightTriangle[e]);
+      const int left = EditableMesh::triangleOf(h), right = EditableMesh::triangleOf(mesh.opposite(h));
+      if (!label(left, net.leftTriangle[e]) || !label(right, net.rightTriangle[e]))
+        return Status::error("internal error: curve " + std::to_string(e) + " has the wrong patch beside it");
     }
   }
   while (!stack.empty())
@@ -92,16 +112,75 @@ Status labelPatches(TracedNet& net)
       if (mesh.tag(h) >= 0)
         continue;
       const int neighbour = EditableMesh::triangleOf(mesh.opposite(h));
-      if (patch[neighbour] >= 0 && patch[neighbour] != patch[t])
-        return Status::error("internal error: patches " + std::to_string(patch[t]) + " and " +
-          std::to_string(patch[neighbour]) + " touch away from a curve");
-      seed(neighbour, patch[t]);
+      if (allowed && !(*allowed)[neighbour])
+        return Status::error("internal error: patch " + std::to_string(patch[t]) + " leaves its region");
+      if (!label(neighbour, patch[t]))
+        return clash(t, neighbour);
     }
   }
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-    if (patch[t] < 0 && !mesh.isRemoved(t))
-      return Status::error("internal error: some triangles belong to no patch");
   return {};
+}
+
+int splitEdgesBetweenCurves(const EditableMesh& mesh, const std::vector<int>& vertices,
+  const std::vector<char>& occupied, const std::function<void(int)>& split)
+{
+  std::vector<std::pair<int, int>> crowded;
+  for (int u : vertices)
+  {
+    const int first = mesh.outgoing(u);
+    int h = first;
+    do
+    {
+      if (occupied[mesh.to(h)] && mesh.tag(h) < 0)
+        crowded.emplace_back(u, mesh.to(h));
+      h = mesh.nextAroundVertex(h);
+    } while (h != first);
+  }
+  int splits = 0;
+  for (const auto& [u, x] : crowded)
+  {
+    const int h = mesh.findHalfedge(u, x); // gone if split from the other end
+    if (h < 0 || mesh.tag(h) >= 0)
+      continue;
+    split(h);
+    ++splits;
+  }
+  return splits;
+}
+
+TriangleMesh extractTriangles(const EditableMesh& mesh, const std::vector<int>& triangles,
+  std::vector<int>& localIndex, std::vector<int>& global)
+{
+  TriangleMesh piece;
+  global.clear();
+  piece.triangles.reserve(triangles.size());
+  for (int t : triangles)
+  {
+    Triangle tri = mesh.triangle(t);
+    for (int& v : tri)
+    {
+      if (localIndex[v] < 0)
+      {
+        localIndex[v] = static_cast<int>(global.size());
+        global.push_back(v);
+        piece.points.push_back(mesh.point(v));
+      }
+      v = localIndex[v];
+    }
+    piece.triangles.push_back(tri);
+  }
+  return piece;
+}
+
+std::vector<double> arcLengthParameters(const EditableMesh& mesh, const std::vector<int>& curve)
+{
+  std::vector<double> parameters(curve.size(), 0.0);
+  for (std::size_t i = 1; i < curve.size(); ++i)
+    parameters[i] = parameters[i - 1] + (mesh.point(curve[i]) - mesh.point(curve[i - 1])).norm();
+  const double length = parameters.empty() ? 0.0 : parameters.back();
+  for (double& s : parameters)
+    s = length > 0.0 ? s / length : 0.0;
+  return parameters;
 }
 
 namespace
@@ -180,19 +259,25 @@ Status layoutFromPatchIds(const TriangleMesh& surface, const std::vector<int>& p
 
 LabelledSurface toLabelledSurface(const TracedNet& net, const BaseDomain& domain)
 {
-  LabelledSurface surface;
-  const EditableMesh& mesh = net.mesh;
-  surface.points.reserve(mesh.vertexCount());
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    surface.points.push_back({ mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z() });
-  surface.triangles.reserve(mesh.triangleCount());
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-    surface.triangles.push_back(mesh.triangle(t));
-  surface.patchId = net.patchOfTriangle;
-  surface.featureId.assign(mesh.vertexCount(), -1);
+  LandmarkList landmarks(domain.mesh.vertexCount());
   for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
-    surface.featureId[net.landmarkVertex[bv]] = domain.featureIds[bv];
-  return surface;
+    landmarks[domain.featureIds[bv]] = net.landmarkVertex[bv];
+  return toLabelledSurface(net.mesh.toTriangleMesh(), net.patchOfTriangle, landmarks);
+}
+
+LabelledSurface toLabelledSurface(
+  const TriangleMesh& surface, const std::vector<int>& patchId, const LandmarkList& landmarks)
+{
+  LabelledSurface labelled;
+  labelled.points.reserve(surface.points.size());
+  for (const Vec3& p : surface.points)
+    labelled.points.push_back({ p.x(), p.y(), p.z() });
+  labelled.triangles = surface.triangles;
+  labelled.patchId = patchId;
+  labelled.featureId.assign(surface.points.size(), -1);
+  for (std::size_t f = 0; f < landmarks.size(); ++f)
+    labelled.featureId[landmarks[f]] = static_cast<int>(f);
+  return labelled;
 }
 
 double curveLength(const EditableMesh& mesh, const std::vector<int>& curve)

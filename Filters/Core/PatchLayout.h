@@ -12,6 +12,7 @@
 #include "TriangleMesh.h"
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace cmp
@@ -64,6 +65,35 @@ struct TracedNet
 ///        no curve.
 Status labelPatches(TracedNet& net);
 
+/// \brief Gives every triangle reachable from the curves `seedEdges`
+///        without crossing a curve the base triangle on its side of them.
+///        Triangles must start at -1 in `net.patchOfTriangle` and curve edges
+///        must be tagged. With `allowed`, the fill stays in the triangles
+///        marked there and fails if it would leave them. Fails if two patches
+///        meet away from a curve.
+Status floodFillPatches(TracedNet& net, const std::vector<int>& seedEdges, const std::vector<char>* allowed = nullptr);
+
+/// \brief Splits every untagged edge from one of `vertices` to a vertex
+///        marked in `occupied`, by calling `split(h)` with a halfedge of it,
+///        so that every gap between curves holds a free vertex. Edges are
+///        found again by their ends before each split (indices move as edges
+///        split); `occupied` is read before the first split. Returns the
+///        number of splits.
+int splitEdgesBetweenCurves(const EditableMesh& mesh, const std::vector<int>& vertices,
+  const std::vector<char>& occupied, const std::function<void(int)>& split);
+
+/// \brief Copies the triangles `triangles` of `mesh` into a mesh of their
+///        own. `localIndex` must hold -1 for every vertex of `mesh`;
+///        afterwards it holds the local index of each copied vertex, and
+///        `global` lists the copied vertices in local order (use it to reset
+///        `localIndex`).
+TriangleMesh extractTriangles(const EditableMesh& mesh, const std::vector<int>& triangles,
+  std::vector<int>& localIndex, std::vector<int>& global);
+
+/// \brief Arc-length position of every vertex of `curve`, from 0 at its
+///        start to 1 at its end (all 0 for a curve of zero length).
+std::vector<double> arcLengthParameters(const EditableMesh& mesh, const std::vector<int>& curve);
+
 /// \brief Rebuilds a layout from a labelled surface (`patchId` per
 ///        triangle, the landmark vertex of each feature): the curve of a base
 ///        edge is the chain of mesh edges between its two patches, from one
@@ -75,6 +105,11 @@ Status layoutFromPatchIds(const TriangleMesh& surface, const std::vector<int>& p
 /// \brief The net as the layout validator's input: the refined surface, its
 ///        PatchId and the landmarks' feature ids.
 LabelledSurface toLabelledSurface(const TracedNet& net, const BaseDomain& domain);
+
+/// \brief A surface with PatchId per triangle and `landmarks[f]` the vertex
+///        of feature f, as the layout validator's input.
+LabelledSurface toLabelledSurface(
+  const TriangleMesh& surface, const std::vector<int>& patchId, const LandmarkList& landmarks);
 
 /// \brief Length of a curve given as mesh vertices.
 double curveLength(const EditableMesh& mesh, const std::vector<int>& curve);

@@ -42,16 +42,12 @@ void boundaryCoordinates(const TracedNet& net, const BaseTopology& base, const T
     std::vector<int> curve = net.curves[e];
     if (base.edges[e][0] != a)
       std::reverse(curve.begin(), curve.end());
-    const double length = curveLength(net.mesh, curve);
-    double walked = 0.0;
+    const std::vector<double> along = arcLengthParameters(net.mesh, curve);
     for (std::size_t i = 0; i + 1 < curve.size(); ++i)
     {
-      if (i > 0)
-        walked += (net.mesh.point(curve[i]) - net.mesh.point(curve[i - 1])).norm();
-      const double s = length > 0.0 ? walked / length : 0.0;
       std::array<double, 3> value{ 0.0, 0.0, 0.0 };
-      value[k] = 1.0 - s;
-      value[(k + 1) % 3] = s;
+      value[k] = 1.0 - along[i];
+      value[(k + 1) % 3] = along[i];
       fixedRow[curve[i]] = static_cast<int>(fixedValues.size());
       fixedValues.push_back(value);
       boundary.push_back(curve[i]);
@@ -64,34 +60,46 @@ constexpr int kMaximumStretchIterations = 30;
 /// parameter area, relative to its share of the surface area, is crowded.
 constexpr double kCrowded = 1e-4;
 
+/// Surface area of every triangle of a patch, and their sum.
+struct PatchAreas
+{
+  std::vector<double> triangle;
+  double total = 0.0;
+
+  explicit PatchAreas(const TriangleMesh& piece)
+  {
+    triangle.resize(piece.triangleCount());
+    for (int t = 0; t < piece.triangleCount(); ++t)
+      total += triangle[t] = triangleArea(piece, t);
+  }
+};
+
+/// Share of the base triangle's area that triangle `tri`'s image takes
+/// (the base triangle has 1), signed: <= 0 if flipped.
+double imageShare(const Triangle& tri, const Eigen::MatrixXd& barycentric)
+{
+  const Eigen::Vector2d e1 = barycentric.row(tri[1]) - barycentric.row(tri[0]);
+  const Eigen::Vector2d e2 = barycentric.row(tri[2]) - barycentric.row(tri[0]);
+  return e1.x() * e2.y() - e1.y() * e2.x();
+}
+
 /// min over triangles of (share of the base triangle's area) / (share of
 /// the patch's surface area): 1 for an area-preserving map, <= 0 if flipped.
-double smallestAreaRatio(const TriangleMesh& piece, const Eigen::MatrixXd& barycentric)
+double smallestAreaRatio(const TriangleMesh& piece, const PatchAreas& areas, const Eigen::MatrixXd& barycentric)
 {
-  double area3D = 0.0;
-  for (int t = 0; t < piece.triangleCount(); ++t)
-    area3D += triangleArea(piece, t);
   double smallest = std::numeric_limits<double>::infinity();
   for (int t = 0; t < piece.triangleCount(); ++t)
-  {
-    const Triangle& tri = piece.triangles[t];
-    const Eigen::Vector2d e1 = barycentric.row(tri[1]) - barycentric.row(tri[0]);
-    const Eigen::Vector2d e2 = barycentric.row(tri[2]) - barycentric.row(tri[0]);
-    const double share = e1.x() * e2.y() - e1.y() * e2.x(); // the base triangle has 1
-    smallest = std::min(smallest, share * area3D / std::max(triangleArea(piece, t), 1e-300));
-  }
+    smallest = std::min(smallest,
+      imageShare(piece.triangles[t], barycentric) * areas.total / std::max(areas.triangle[t], 1e-300));
   return smallest;
 }
 
 /// Sander's L2 stretch of each vertex (area-weighted over its triangles)
 /// for the map from the base triangle, drawn equilateral with the patch's
 /// area, to the surface; crowded vertices get a large value, capped.
-Eigen::VectorXd vertexStretch(const TriangleMesh& piece, const Eigen::MatrixXd& barycentric)
+Eigen::VectorXd vertexStretch(const TriangleMesh& piece, const PatchAreas& areas, const Eigen::MatrixXd& barycentric)
 {
-  double area3D = 0.0;
-  for (int t = 0; t < piece.triangleCount(); ++t)
-    area3D += triangleArea(piece, t);
-  const double side = std::sqrt(4.0 * area3D / std::sqrt(3.0));
+  const double side = std::sqrt(4.0 * areas.total / std::sqrt(3.0));
   const Eigen::Vector2d cornerB(side, 0.0), cornerC(0.5 * side, 0.5 * std::sqrt(3.0) * side);
   const auto plane = [&](int v) -> Eigen::Vector2d { return barycentric(v, 0) * cornerB + barycentric(v, 1) * cornerC; };
   constexpr double kCap = 1e8;
@@ -109,7 +117,7 @@ Eigen::VectorXd vertexStretch(const TriangleMesh& piece, const Eigen::MatrixXd& 
       const Vec3 st = (p1 * (q3.x() - q2.x()) + p2 * (q1.x() - q3.x()) + p3 * (q2.x() - q1.x())) / twiceArea;
       stretch = std::min(kCap, std::sqrt(0.5 * (ss.squaredNorm() + st.squaredNorm())));
     }
-    const double area = triangleArea(piece, t);
+    const double area = areas.triangle[t];
     for (int v : tri)
     {
       weighted[v] += area * stretch * stretch;
@@ -146,23 +154,9 @@ Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, Patch
     std::vector<int> boundary;
     boundaryCoordinates(net, base, domain.mesh.triangles[patch], globalFixedRow, boundaryValues, boundary);
 
-    TriangleMesh piece;
     std::vector<int> global;
-    for (int t : trianglesOf[patch])
-    {
-      Triangle tri = mesh.triangle(t);
-      for (int& v : tri)
-      {
-        if (local[v] < 0)
-        {
-          local[v] = static_cast<int>(global.size());
-          global.push_back(v);
-          piece.points.push_back(mesh.point(v));
-        }
-        v = local[v];
-      }
-      piece.triangles.push_back(tri);
-    }
+    const TriangleMesh piece = extractTriangles(mesh, trianglesOf[patch], local, global);
+    const PatchAreas areas(piece);
     std::vector<int> fixedRow(global.size(), -1);
     for (std::size_t i = 0; i < global.size(); ++i)
       fixedRow[i] = globalFixedRow[global[i]];
@@ -178,15 +172,15 @@ Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, Patch
     // keep the least crowded map.
     // Weights spanning many orders of magnitude make late iterations
     // unstable, hence the cap, the patience and keeping the best map.
-    double crowding = smallestAreaRatio(piece, values);
+    double crowding = smallestAreaRatio(piece, areas, values);
     Eigen::MatrixXd relaxed = values;
     for (int iteration = 0, idle = 0; iteration < kMaximumStretchIterations && crowding < kCrowded && idle < 4;
          ++iteration, ++idle)
     {
-      weights = weights * vertexStretch(piece, relaxed).cwiseInverse().asDiagonal();
+      weights = weights * vertexStretch(piece, areas, relaxed).cwiseInverse().asDiagonal();
       if (!solveConvexCombinationSystem(weights, fixedRow, fixedValues, relaxed).ok())
         break;
-      const double relaxedCrowding = smallestAreaRatio(piece, relaxed);
+      const double relaxedCrowding = smallestAreaRatio(piece, areas, relaxed);
       if (relaxedCrowding > crowding)
       {
         crowding = relaxedCrowding;
@@ -198,9 +192,7 @@ Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, Patch
 
     for (const Triangle& tri : piece.triangles)
     {
-      const Eigen::Vector2d p0 = values.row(tri[0]), p1 = values.row(tri[1]), p2 = values.row(tri[2]);
-      const Eigen::Vector2d e1 = p1 - p0, e2 = p2 - p0;
-      const double relativeArea = e1.x() * e2.y() - e1.y() * e2.x(); // base triangle: 1
+      const double relativeArea = imageShare(tri, values);
       out.smallestRelativeArea = std::min(out.smallestRelativeArea, relativeArea);
       if (!(relativeArea > 0.0))
         ++out.flippedTriangles;
