@@ -63,23 +63,6 @@ std::string propertyProblem(int sweeps, double tolerance, double snap)
   return problem.str();
 }
 
-/// The labelled surface the layout validator judges: the input's triangles,
-/// its PatchId and its landmarks.
-cmp::LabelledSurface labelledInput(
-  const cmp::TriangleMesh& mesh, const std::vector<int>& patchIds, const cmp::LandmarkList& landmarks)
-{
-  cmp::LabelledSurface surface;
-  surface.points.reserve(mesh.points.size());
-  for (const cmp::Vec3& p : mesh.points)
-    surface.points.push_back({ p.x(), p.y(), p.z() });
-  surface.triangles = mesh.triangles;
-  surface.patchId = patchIds;
-  surface.featureId.assign(mesh.points.size(), -1);
-  for (std::size_t f = 0; f < landmarks.size(); ++f)
-    surface.featureId[landmarks[f]] = static_cast<int>(f);
-  return surface;
-}
-
 /// The first problem the independent layout check finds, or "".
 std::string layoutProblem(const cmp::LabelledSurface& surface, const cmp::BaseDomain& domain)
 {
@@ -237,7 +220,7 @@ int vtkCMPNetStraightener::RequestData(
   // The core only rebuilds a layout that is one; checking first names the
   // problem in the user's terms (for example L0 from another collection).
   if (status.ok())
-    if (const std::string problem = layoutProblem(labelledInput(mesh, patchIds, landmarks), domain);
+    if (const std::string problem = layoutProblem(cmp::toLabelledSurface(mesh, patchIds, landmarks), domain);
         !problem.empty())
       status = cmp::Status::error("the input's PatchId layout is not equivalent to L0: " + problem);
   cmp::TracedNet traced;
