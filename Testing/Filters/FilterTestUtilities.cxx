@@ -6,13 +6,17 @@
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
 #include <vtkExecutive.h>
+#include <vtkFieldData.h>
 #include <vtkIntArray.h>
+#include <vtkMassProperties.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 
 namespace cmp::test
 {
@@ -66,6 +70,20 @@ vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::
   const RunResult result = run(assign);
   EXPECT_TRUE(result.succeeded) << result.error;
   return assign->GetOutput();
+}
+
+double areaOf(vtkPolyData* surface)
+{
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(surface);
+  mass->Update();
+  return mass->GetSurfaceArea();
+}
+
+double fieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetComponent(0, 0) : NAN;
 }
 
 } // namespace cmp::test

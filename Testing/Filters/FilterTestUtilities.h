@@ -32,6 +32,12 @@ std::string octahedronOFF(bool open = false);
 /// \brief Sets point array FeatureId to `ids`, padded with -1 to the point count.
 void setFeatureIds(vtkPolyData* surface, std::vector<int> ids);
 
+/// \brief Surface area of `surface` (vtkMassProperties).
+double areaOf(vtkPolyData* surface);
+
+/// \brief First value of field array `name`, NaN if there is none.
+double fieldValue(vtkPolyData* data, const char* name);
+
 /// \brief Reads a surface with vtkCMPSurfaceReader and adds landmarks from a file.
 vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::string& landmarks);
 

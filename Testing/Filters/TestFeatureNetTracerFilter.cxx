@@ -8,7 +8,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
-#include <vtkMassProperties.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
@@ -28,20 +27,6 @@ vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)
   builder->SetInputData(surface);
   EXPECT_TRUE(run(builder).succeeded);
   return builder->GetOutput();
-}
-
-double areaOf(vtkPolyData* surface)
-{
-  vtkNew<vtkMassProperties> mass;
-  mass->SetInputData(surface);
-  mass->Update();
-  return mass->GetSurfaceArea();
-}
-
-double fieldValue(vtkPolyData* data, const char* name)
-{
-  vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetComponent(0, 0) : NAN;
 }
 
 } // namespace

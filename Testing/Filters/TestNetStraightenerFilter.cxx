@@ -13,7 +13,6 @@
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
-#include <vtkMassProperties.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
@@ -50,20 +49,6 @@ vtkSmartPointer<vtkPolyData> traced(vtkPolyData* surface, vtkPolyData* l0)
   const RunResult result = run(tracer);
   EXPECT_TRUE(result.succeeded) << result.error;
   return tracer->GetOutput(0);
-}
-
-double areaOf(vtkPolyData* surface)
-{
-  vtkNew<vtkMassProperties> mass;
-  mass->SetInputData(surface);
-  mass->Update();
-  return mass->GetSurfaceArea();
-}
-
-double fieldValue(vtkPolyData* data, const char* name)
-{
-  vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetComponent(0, 0) : NAN;
 }
 
 double diagonalOf(vtkPolyData* surface)

@@ -13,13 +13,9 @@ sys.dont_write_bytecode = True  # keep the source folder clean
 from paraview import servermanager
 from paraview import simple
 
-from cmp_test_support import ErrorCapture, check, check_contains, check_equal, field_value, landmark_ids
-
-
-def field(data, name):
-    value = field_value(data, name)
-    check(value is not None, "no field array " + name)
-    return value
+from cmp_test_support import (ErrorCapture, check, check_contains, check_equal, landmark_ids, landmarked_shrec,
+                              load_plugin_proxies)
+from cmp_test_support import required_field as field
 
 
 def check_block(surface, curves, original_points, what):
@@ -65,14 +61,10 @@ def main():
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--data", required=True)
     args = parser.parse_args()
-    # LoadPlugin adds the plugin's proxy functions to the namespace it is given.
-    names = vars(simple)
-    simple.LoadPlugin(args.plugin, ns=names)
-    folder = args.data + "/shrec07-fourleg/"
+    names = load_plugin_proxies(args.plugin)
 
     def landmarked(model):
-        reader = names["ConsistentMeshSurfaceReader"](FileName=folder + model + ".off")
-        return names["LandmarksFromFile"](Input=reader, LandmarkFile=folder + model + ".vts")
+        return landmarked_shrec(names, args.data, model)
 
     def with_x(model):
         # A made-up point array, as a user would add one: the x coordinate.

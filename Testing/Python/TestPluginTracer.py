@@ -6,8 +6,13 @@ Usage: pvpython TestPluginTracer.py --plugin PLUGIN.so --data SHARED_DATA
 import argparse
 import sys
 
+sys.dont_write_bytecode = True  # keep the source folder clean
+
 from paraview import servermanager
 from paraview import simple
+
+from cmp_test_support import landmarked_shrec, load_plugin_proxies
+from cmp_test_support import required_field as field
 
 
 def fail(message):
@@ -15,26 +20,15 @@ def fail(message):
     sys.exit(1)
 
 
-def field(data, name):
-    array = data.GetFieldData().GetArray(name)
-    if array is None:
-        fail("no field array " + name)
-    return array.GetValue(0)
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--data", required=True)
     args = parser.parse_args()
-    # LoadPlugin adds the plugin's proxy functions to the namespace it is given.
-    names = vars(simple)
-    simple.LoadPlugin(args.plugin, ns=names)
-    folder = args.data + "/shrec07-fourleg/"
+    names = load_plugin_proxies(args.plugin)
 
     def landmarked(model):
-        reader = names["ConsistentMeshSurfaceReader"](FileName=folder + model + ".off")
-        return names["LandmarksFromFile"](Input=reader, LandmarkFile=folder + model + ".vts")
+        return landmarked_shrec(names, args.data, model)
 
     base = names["BaseDomainBuilder"](Input=landmarked("381"))
     group = simple.GroupDatasets(Input=[landmarked("384"), landmarked("391")])

@@ -207,6 +207,29 @@ def field_value(dataset, name):
     return array.GetValue(0)
 
 
+def required_field(dataset, name):
+    """The first value of field array `name`; fails the check if it is missing."""
+    value = field_value(dataset, name)
+    check(value is not None, "no field array " + name)
+    return value
+
+
+def load_plugin_proxies(plugin):
+    """Loads the plugin and returns the namespace its proxy functions were
+    added to (paraview.simple's)."""
+    from paraview import simple
+    names = vars(simple)
+    simple.LoadPlugin(plugin, ns=names)
+    return names
+
+
+def landmarked_shrec(names, data, model):
+    """A SHREC'07 model read and given its landmarks, as a GUI user builds it."""
+    folder = os.path.join(data, "shrec07-fourleg")
+    reader = names["ConsistentMeshSurfaceReader"](FileName=os.path.join(folder, model + ".off"))
+    return names["LandmarksFromFile"](Input=reader, LandmarkFile=os.path.join(folder, model + ".vts"))
+
+
 def shared_data(argv_value=None):
     """The shared data folder, from the argument or CMP_SHARED_DATA_DIR."""
     path = argv_value or os.environ.get("CMP_SHARED_DATA_DIR", "")
