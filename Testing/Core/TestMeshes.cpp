@@ -2,6 +2,8 @@
 
 #include "Subdivision.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -70,6 +72,68 @@ TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b)
     mesh.triangles.push_back(tri);
   }
   return mesh;
+}
+
+TriangleMesh bumpySphere(int levels)
+{
+  TriangleMesh mesh = sphere(levels);
+  for (Vec3& p : mesh.points)
+    p *= 1.0 + 0.2 * std::sin(5 * p.x()) * std::sin(4 * p.y()) * std::sin(3 * p.z());
+  return mesh;
+}
+
+int nearestVertex(const TriangleMesh& mesh, const Vec3& direction)
+{
+  int best = 0;
+  for (int v = 1; v < mesh.vertexCount(); ++v)
+    if (mesh.points[v].normalized().dot(direction.normalized()) >
+      mesh.points[best].normalized().dot(direction.normalized()))
+      best = v;
+  return best;
+}
+
+namespace
+{
+
+/// Reads a model of the shared data; "spot" is the OBJ with SHREC landmarks.
+Status loadRealModel(const std::string& name, LandmarkedModel& model)
+{
+  model = LandmarkedModel{ name, {}, {} };
+  const std::string shrec = sharedDataDir() + "/shrec07-fourleg/" + name;
+  Status status = name == "spot" ? readOBJ(sharedDataDir() + "/spot/spot.obj", model.data)
+                                 : readOFF(shrec + ".off", model.data);
+  if (status.ok())
+    status = readLandmarkFile(name == "spot" ? sharedDataDir() + "/spot/spot_shrec07.pinned" : shrec + ".vts",
+      model.data.mesh, model.data.fileToMeshPoint, model.landmarks);
+  return status;
+}
+
+} // namespace
+
+std::vector<LandmarkedModel> landmarkedRealModels()
+{
+  std::vector<std::string> names;
+  for (const std::string& path : landmarkedFourLeggedModels())
+    names.push_back(path.substr(path.find_last_of('/') + 1));
+  names.push_back("spot");
+  std::vector<LandmarkedModel> models;
+  for (const std::string& name : names)
+  {
+    LandmarkedModel model;
+    if (const Status status = loadRealModel(name, model); status.ok())
+      models.push_back(std::move(model));
+    else
+      ADD_FAILURE() << name << ": " << status.message();
+  }
+  return models;
+}
+
+LandmarkedModel landmarkedRealModel(const std::string& name)
+{
+  LandmarkedModel model;
+  if (const Status status = loadRealModel(name, model); !status.ok())
+    ADD_FAILURE() << name << ": " << status.message();
+  return model;
 }
 
 std::vector<std::string> landmarkedFourLeggedModels()

@@ -100,9 +100,7 @@ StraightenResult expectStraightened(const TriangleMesh& surface, const LandmarkL
 
 TEST(NetStraightener, OctahedronLayoutOnABumpySphere)
 {
-  TriangleMesh mesh = test::sphere(4);
-  for (Vec3& p : mesh.points)
-    p *= 1.0 + 0.2 * std::sin(5 * p.x()) * std::sin(4 * p.y()) * std::sin(3 * p.z());
+  const TriangleMesh mesh = test::bumpySphere(4);
   const TriangleMesh o = test::octahedron();
   BaseDomain domain{ o, { 0, 1, 2, 3, 4, 5 } };
   LandmarkList landmarks;
@@ -110,14 +108,7 @@ TEST(NetStraightener, OctahedronLayoutOnABumpySphere)
   const Eigen::Matrix3d turn =
     (Eigen::AngleAxisd(0.4, Vec3::UnitZ()) * Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized())).toRotationMatrix();
   for (const Vec3& axis : o.points)
-  {
-    const Vec3 d = turn * axis;
-    int best = 0;
-    for (int v = 1; v < mesh.vertexCount(); ++v)
-      if (mesh.points[v].normalized().dot(d) > mesh.points[best].normalized().dot(d))
-        best = v;
-    landmarks.push_back(best);
-  }
+    landmarks.push_back(test::nearestVertex(mesh, turn * axis));
   const StraightenResult result = expectStraightened(mesh, landmarks, domain, "bumpy sphere");
   EXPECT_GE(result.report.sweeps, 1);
   std::cout << "bumpy sphere: length " << result.report.netLengthBefore << " -> " << result.report.netLengthAfter
@@ -128,39 +119,17 @@ TEST(NetStraightener, OctahedronLayoutOnABumpySphere)
 TEST(NetStraightener, EveryRealModelWithL0From381)
 {
   CMP_REQUIRE_SHARED_DATA();
-  MeshFileData source;
-  LandmarkList sourceLandmarks;
-  const std::string sourcePath = test::sharedDataDir() + "/shrec07-fourleg/381";
-  ASSERT_TRUE(readOFF(sourcePath + ".off", source).ok());
-  ASSERT_TRUE(readLandmarkFile(sourcePath + ".vts", source.mesh, source.fileToMeshPoint, sourceLandmarks).ok());
-  BaseDomain domain;
-  ASSERT_TRUE(buildBaseDomain(source.mesh, sourceLandmarks, domain).ok());
-
-  std::vector<std::pair<std::string, MeshFileData>> models;
-  std::vector<LandmarkList> landmarks;
-  for (const std::string& path : test::landmarkedFourLeggedModels())
-  {
-    MeshFileData data;
-    LandmarkList l;
-    ASSERT_TRUE(readOFF(path + ".off", data).ok());
-    ASSERT_TRUE(readLandmarkFile(path + ".vts", data.mesh, data.fileToMeshPoint, l).ok());
-    models.emplace_back(path.substr(path.find_last_of('/') + 1), std::move(data));
-    landmarks.push_back(l);
-  }
-  MeshFileData spot;
-  LandmarkList spotLandmarks;
-  ASSERT_TRUE(readOBJ(test::sharedDataDir() + "/spot/spot.obj", spot).ok());
-  ASSERT_TRUE(
-    readLandmarkFile(test::sharedDataDir() + "/spot/spot_shrec07.pinned", spot.mesh, spot.fileToMeshPoint, spotLandmarks)
-      .ok());
-  models.emplace_back("spot", std::move(spot));
-  landmarks.push_back(spotLandmarks);
+  const std::vector<test::LandmarkedModel> models = test::landmarkedRealModels();
   ASSERT_GE(models.size(), 11u);
+  const auto source =
+    std::find_if(models.begin(), models.end(), [](const test::LandmarkedModel& m) { return m.name == "381"; });
+  ASSERT_NE(source, models.end());
+  BaseDomain domain;
+  ASSERT_TRUE(buildBaseDomain(source->data.mesh, source->landmarks, domain).ok());
 
-  for (std::size_t i = 0; i < models.size(); ++i)
+  for (const auto& [name, data, landmarks] : models)
   {
-    const auto& [name, data] = models[i];
-    const StraightenResult r = expectStraightened(data.mesh, landmarks[i], domain, name);
+    const StraightenResult r = expectStraightened(data.mesh, landmarks, domain, name);
     const double root = std::sqrt(surfaceArea(data.mesh));
     std::cout << name << ": length/sqrt(area) " << r.report.netLengthBefore / root << " -> "
               << r.report.netLengthAfter / root << ", area variation " << r.report.areaVariationBefore << " -> "
@@ -173,18 +142,12 @@ TEST(NetStraightener, EveryRealModelWithL0From381)
 
 TEST(NetStraightener, RebuildsTheNetFromPatchIdsAndRefusesBadInput)
 {
-  TriangleMesh mesh = test::sphere(3);
+  const TriangleMesh mesh = test::sphere(3);
   const TriangleMesh o = test::octahedron();
   BaseDomain domain{ o, { 0, 1, 2, 3, 4, 5 } };
   LandmarkList landmarks;
   for (const Vec3& d : o.points)
-  {
-    int best = 0;
-    for (int v = 1; v < mesh.vertexCount(); ++v)
-      if (mesh.points[v].dot(d) > mesh.points[best].dot(d))
-        best = v;
-    landmarks.push_back(best);
-  }
+    landmarks.push_back(test::nearestVertex(mesh, d));
   TracedNet traced;
   ASSERT_TRUE(traceFeatureNet(mesh, landmarks, domain, traced).ok());
   const TriangleMesh refined = traced.mesh.toTriangleMesh();

@@ -31,23 +31,8 @@ NetTracerReport expectValidNet(const TriangleMesh& surface, const LandmarkList& 
   return report;
 }
 
-TriangleMesh bumpySphere(int levels)
-{
-  TriangleMesh mesh = test::sphere(levels);
-  for (Vec3& p : mesh.points)
-    p *= 1.0 + 0.2 * std::sin(5 * p.x()) * std::sin(4 * p.y()) * std::sin(3 * p.z());
-  return mesh;
-}
-
-int nearestVertex(const TriangleMesh& mesh, const Vec3& direction)
-{
-  int best = 0;
-  for (int v = 1; v < mesh.vertexCount(); ++v)
-    if (mesh.points[v].normalized().dot(direction.normalized()) >
-      mesh.points[best].normalized().dot(direction.normalized()))
-      best = v;
-  return best;
-}
+using test::bumpySphere;
+using test::nearestVertex;
 
 /// A base domain whose vertex i is feature i, with the given triangles.
 BaseDomain domainOf(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles)
@@ -184,34 +169,15 @@ TEST(NetTracer, RefusesBadInput)
 TEST(NetTracer, EveryRealModelWithL0From381AndFromSpot)
 {
   CMP_REQUIRE_SHARED_DATA();
-  struct Model
-  {
-    std::string name;
-    MeshFileData data;
-    LandmarkList landmarks;
-  };
-  std::vector<Model> models;
-  for (const std::string& path : test::landmarkedFourLeggedModels())
-  {
-    Model m{ path.substr(path.find_last_of('/') + 1), {}, {} };
-    ASSERT_TRUE(readOFF(path + ".off", m.data).ok());
-    ASSERT_TRUE(readLandmarkFile(path + ".vts", m.data.mesh, m.data.fileToMeshPoint, m.landmarks).ok());
-    models.push_back(std::move(m));
-  }
-  Model spot{ "spot", {}, {} };
-  ASSERT_TRUE(readOBJ(test::sharedDataDir() + "/spot/spot.obj", spot.data).ok());
-  ASSERT_TRUE(readLandmarkFile(test::sharedDataDir() + "/spot/spot_shrec07.pinned", spot.data.mesh,
-    spot.data.fileToMeshPoint, spot.landmarks)
-                .ok());
-  models.push_back(std::move(spot));
+  const std::vector<test::LandmarkedModel> models = test::landmarkedRealModels();
   ASSERT_GE(models.size(), 11u);
   for (const std::string source : { "381", "spot" })
   {
-    const auto it = std::find_if(models.begin(), models.end(), [&](const Model& m) { return m.name == source; });
+    const auto it = std::find_if(models.begin(), models.end(), [&](const test::LandmarkedModel& m) { return m.name == source; });
     ASSERT_NE(it, models.end());
     BaseDomain domain;
     ASSERT_TRUE(buildBaseDomain(it->data.mesh, it->landmarks, domain).ok());
-    for (const Model& model : models)
+    for (const test::LandmarkedModel& model : models)
     {
       const NetTracerReport report =
         expectValidNet(model.data.mesh, model.landmarks, domain, model.name + " with L0 from " + source);

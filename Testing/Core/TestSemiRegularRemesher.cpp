@@ -68,24 +68,15 @@ TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel
 TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
 {
   CMP_REQUIRE_SHARED_DATA();
-  MeshFileData source;
-  LandmarkList sourceLandmarks;
-  const std::string dir = test::sharedDataDir() + "/shrec07-fourleg/";
-  ASSERT_TRUE(readOFF(dir + "381.off", source).ok());
-  ASSERT_TRUE(readLandmarkFile(dir + "381.vts", source.mesh, source.fileToMeshPoint, sourceLandmarks).ok());
+  const test::LandmarkedModel source = test::landmarkedRealModel("381");
   BaseDomain domain;
-  ASSERT_TRUE(buildBaseDomain(source.mesh, sourceLandmarks, domain).ok());
+  ASSERT_TRUE(buildBaseDomain(source.data.mesh, source.landmarks, domain).ok());
   const int level = 5;
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, level, remesh).ok());
 
-  for (const std::string& path : test::landmarkedFourLeggedModels())
+  for (const auto& [name, data, landmarks] : test::landmarkedRealModels())
   {
-    const std::string name = path.substr(path.find_last_of('/') + 1);
-    MeshFileData data;
-    LandmarkList landmarks;
-    ASSERT_TRUE(readOFF(path + ".off", data).ok());
-    ASSERT_TRUE(readLandmarkFile(path + ".vts", data.mesh, data.fileToMeshPoint, landmarks).ok());
     TracedNet traced;
     ASSERT_TRUE(traceFeatureNet(data.mesh, landmarks, domain, traced).ok());
     StraightenedNet straight;
