@@ -141,18 +141,24 @@ def check_against_base_domain(model, domain):
     model.timed("base_domain_check", _run, check)
 
 
+def _run_net_filter(model, stage, algorithm, surface, domain, output_folder, surface_suffix, curves_suffix):
+    """Runs a (surface, L0) -> (surface, curves) filter as `stage`, writes
+    both outputs as NAME.<suffix>.vtp and returns the output surface and a
+    reader of its field values."""
+    algorithm.SetInputData(0, surface)
+    algorithm.SetInputData(1, domain)
+    result = model.timed(stage, _run, algorithm)
+    write_polydata(result, os.path.join(output_folder, model.name + surface_suffix))
+    write_polydata(algorithm.GetOutputDataObject(1), os.path.join(output_folder, model.name + curves_suffix))
+    field = result.GetFieldData()
+    return result, lambda name: field.GetArray(name).GetValue(0)
+
+
 def trace_net(model, domain, output_folder):
     """FeatureNetTracer: writes NAME.net.vtp (the refined surface with
     PatchId) and NAME.curves.vtp (one polyline per base-domain edge)."""
-    tracer = cmp.vtkCMPFeatureNetTracer()
-    tracer.SetInputData(0, model.surface)
-    tracer.SetInputData(1, domain)
-    surface = model.timed("trace", _run, tracer)
-    curves = tracer.GetOutputDataObject(1)
-    write_polydata(surface, os.path.join(output_folder, model.name + ".net.vtp"))
-    write_polydata(curves, os.path.join(output_folder, model.name + ".curves.vtp"))
-    field = surface.GetFieldData()
-    value = lambda name: field.GetArray(name).GetValue(0)
+    surface, value = _run_net_filter(model, "trace", cmp.vtkCMPFeatureNetTracer(), model.surface, domain,
+                                     output_folder, ".net.vtp", ".curves.vtp")
     model.report["net"] = {
         "length": round(value("NetLength"), 6),
         "length_per_sqrt_area": round(value("NetLengthPerSqrtArea"), 4),
@@ -171,15 +177,8 @@ def straighten_net(model, domain, traced, output_folder):
     """NetStraightener on the tracer's surface: writes NAME.param.vtp (the
     re-triangulated surface with PatchId, BaseTriangle and BaseCoordinates)
     and NAME.straight-curves.vtp (the straightened curves)."""
-    straightener = cmp.vtkCMPNetStraightener()
-    straightener.SetInputData(0, traced)
-    straightener.SetInputData(1, domain)
-    surface = model.timed("straighten", _run, straightener)
-    curves = straightener.GetOutputDataObject(1)
-    write_polydata(surface, os.path.join(output_folder, model.name + ".param.vtp"))
-    write_polydata(curves, os.path.join(output_folder, model.name + ".straight-curves.vtp"))
-    field = surface.GetFieldData()
-    value = lambda name: field.GetArray(name).GetValue(0)
+    surface, value = _run_net_filter(model, "straighten", cmp.vtkCMPNetStraightener(), traced, domain,
+                                     output_folder, ".param.vtp", ".straight-curves.vtp")
     model.report["straighten"] = {
         "net_length_before": round(value("NetLengthBefore"), 6),
         "net_length_after": round(value("NetLengthAfter"), 6),
