@@ -14,3 +14,12 @@ def white_view(width, height):
     except AttributeError:  # ParaView versions without palettes
         pass
     return view
+
+
+def landmarked_shrec(names, data, model):
+    """A SHREC'07 model of the shared data read and given its landmarks,
+    with the plugin's proxy functions found in `names` (where LoadPlugin put
+    them)."""
+    folder = data + "/shrec07-fourleg/"
+    reader = names["ConsistentMeshSurfaceReader"](FileName=folder + model + ".off")
+    return names["LandmarksFromFile"](Input=reader, LandmarkFile=folder + model + ".vts")

@@ -6,20 +6,14 @@ Usage: pvpython render_feature_net.py PLUGIN.so DATA_DIR MODEL OUTPUT.png
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import white_view
+from render_common import landmarked_shrec, white_view
 
 plugin, data, model, output = sys.argv[1:5]
 LoadPlugin(plugin, ns=globals())
 
 
-def landmarked(name):
-    folder = data + "/shrec07-fourleg/"
-    reader = ConsistentMeshSurfaceReader(FileName=folder + name + ".off")
-    return LandmarksFromFile(Input=reader, LandmarkFile=folder + name + ".vts")
-
-
-base = BaseDomainBuilder(Input=landmarked("381"))
-tracer = FeatureNetTracer(Input=landmarked(model), BaseDomain=base)
+base = BaseDomainBuilder(Input=landmarked_shrec(globals(), data, "381"))
+tracer = FeatureNetTracer(Input=landmarked_shrec(globals(), data, model), BaseDomain=base)
 
 view = white_view(1200, 700)
 
