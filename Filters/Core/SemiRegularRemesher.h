@@ -11,6 +11,8 @@
 #include "TriangleMesh.h"
 
 #include <array>
+#include <functional>
+#include <memory>
 #include <vector>
 
 namespace cmp
@@ -42,6 +44,11 @@ struct SemiRegularMesh
   std::vector<int> patchOfTriangle;     ///< Base triangle of each triangle.
   std::vector<BaseLocation> locations;  ///< Base-domain place of each vertex.
   std::vector<int> levelOfVertex;       ///< Level at which each vertex appears (0 for base vertices).
+  /// \brief Level of each triangle: `level` everywhere for uniform
+  ///        refinement; for adaptive refinement the depth of the leaf it
+  ///        belongs to (a leaf bisected to close a T-junction gives both
+  ///        halves its own level).
+  std::vector<int> levelOfTriangle;
 
   /// \brief Number of vertices.
   int vertexCount() const { return static_cast<int>(locations.size()); }
@@ -51,6 +58,27 @@ struct SemiRegularMesh
 ///        Depends only on the base domain and the level.
 Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out);
 
+/// \brief Decides whether a triangle of an adaptive remesh is split: gets
+///        its corners as locations in its base triangle and its level.
+using SplitRule = std::function<bool(const std::array<BaseLocation, 3>& corners, int level)>;
+
+/// \brief Builds an adaptive semi-regular connectivity: triangles are
+///        quadrisected while `needsSplit` says so, up to `maximumLevel`;
+///        then neighbours are split until levels differ by at most one
+///        across every edge, and a triangle with one finer neighbour is
+///        bisected at that edge's midpoint so that the mesh has no
+///        T-junctions (a triangle with two or more is quadrisected).
+///
+/// The result depends only on the base domain and on which triangles are
+/// split, so every model remeshed with one rule shares it. Numbering is
+/// that of `buildSemiRegularMesh()` restricted to the split triangles (with
+/// every triangle split it is identical): base vertices first, then the
+/// midpoints of level l in the order their edges first appear when the
+/// split triangles of level l - 1 are read in order; triangles in the order
+/// of recursive quadrisection, a bisected leaf giving its two halves.
+Status buildAdaptiveSemiRegularMesh(
+  const BaseDomain& domain, int maximumLevel, const SplitRule& needsSplit, SemiRegularMesh& out);
+
 /// \brief Where one remesh vertex lands on a model: a convex combination of
 ///        three vertices of the parameterized surface.
 struct SurfaceSample
@@ -58,6 +86,48 @@ struct SurfaceSample
   std::array<int, 3> vertex{ { -1, -1, -1 } };        ///< Surface vertices.
   std::array<double, 3> weight{ { 0.0, 0.0, 0.0 } };  ///< Their weights (sum 1).
 };
+
+/// \brief One parameterized model, ready to answer where a base-domain
+///        location lies on it: a uniform grid per patch over the images
+///        of its triangles, built once.
+class ParameterizedSurface
+{
+public:
+  /// \brief Indexes `net` (the straightener's output) with its per-patch
+  ///        parameterization. `net` must outlive this object.
+  Status build(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& parameterization);
+
+  /// \brief The surface point at base location `at`: the landmark itself
+  ///        at a base vertex, otherwise the triangle of `at`'s patch whose
+  ///        image contains it, with barycentric weights.
+  Status locate(const BaseLocation& at, SurfaceSample& sample) const;
+
+  /// \brief The position of `sample` on the surface.
+  Vec3 position(const SurfaceSample& sample) const;
+
+  /// \brief Length of the diagonal of the surface's bounding box.
+  double boundingBoxDiagonal() const { return diagonal_; }
+
+  ParameterizedSurface();
+  ~ParameterizedSurface();
+  ParameterizedSurface(ParameterizedSurface&&) noexcept;
+  ParameterizedSurface& operator=(ParameterizedSurface&&) noexcept;
+
+private:
+  struct Index;
+  std::unique_ptr<Index> index_;
+  const TracedNet* net_ = nullptr;
+  const BaseDomain* domain_ = nullptr;
+  double diagonal_ = 0.0;
+};
+
+/// \brief The split rule for adaptive remeshing of a collection: a triangle
+///        is split when, on any of `models`, the surface point at one of
+///        its edge midpoints or at its centroid lies farther than
+///        `tolerance` times that model's bounding-box diagonal from the
+///        point the flat triangle through its corners' surface points puts
+///        there. Models must outlive the rule.
+SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& models, double tolerance);
 
 /// \brief Places every vertex of `remesh` on a parameterized model by
 ///        inverting its parameterization: the triangle of the vertex's patch

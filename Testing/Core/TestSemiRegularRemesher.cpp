@@ -10,7 +10,9 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <map>
 #include <cmath>
 
 using namespace cmp;
@@ -111,4 +113,107 @@ TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
     std::cout << name << ": level " << level << ", " << remesh.vertexCount() << " vertices, placed in " << seconds
               << " s, " << flipped << " triangles against the surface normal\n";
   }
+}
+
+namespace
+{
+
+/// Draws a remesh on the octahedron's surface.
+TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh)
+{
+  TriangleMesh drawn;
+  for (const BaseLocation& at : mesh.locations)
+  {
+    Vec3 p = Vec3::Zero();
+    for (int k = 0; k < 3; ++k)
+      p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
+    drawn.points.push_back(p);
+  }
+  drawn.triangles = mesh.triangles;
+  return drawn;
+}
+
+} // namespace
+
+TEST(SemiRegularRemesher, AdaptiveWithEverySplitIsTheUniformRemesh)
+{
+  const BaseDomain domain = octahedronDomain();
+  for (int level = 0; level <= 4; ++level)
+  {
+    SemiRegularMesh uniform, adaptive;
+    ASSERT_TRUE(buildSemiRegularMesh(domain, level, uniform).ok());
+    ASSERT_TRUE(
+      buildAdaptiveSemiRegularMesh(domain, level, [](const auto&, int) { return true; }, adaptive).ok());
+    EXPECT_EQ(adaptive.level, level);
+    EXPECT_EQ(adaptive.triangles, uniform.triangles) << "level " << level;
+    EXPECT_EQ(adaptive.patchOfTriangle, uniform.patchOfTriangle);
+    EXPECT_EQ(adaptive.levelOfVertex, uniform.levelOfVertex);
+    EXPECT_EQ(adaptive.levelOfTriangle, uniform.levelOfTriangle);
+    ASSERT_EQ(adaptive.vertexCount(), uniform.vertexCount());
+    for (int v = 0; v < uniform.vertexCount(); ++v)
+    {
+      EXPECT_EQ(adaptive.locations[v].triangle, uniform.locations[v].triangle);
+      EXPECT_EQ(adaptive.locations[v].coordinates, uniform.locations[v].coordinates);
+    }
+  }
+  SemiRegularMesh none;
+  ASSERT_TRUE(buildAdaptiveSemiRegularMesh(domain, 5, [](const auto&, int) { return false; }, none).ok());
+  EXPECT_EQ(none.triangles.size(), 8u);
+  EXPECT_EQ(none.level, 0);
+  EXPECT_FALSE(buildAdaptiveSemiRegularMesh(domain, 9, [](const auto&, int) { return true; }, none).ok());
+}
+
+TEST(SemiRegularRemesher, AdaptiveRefinementIsClosedBalancedAndDeterministic)
+{
+  const BaseDomain domain = octahedronDomain();
+  // Refine towards one base vertex only: the rest must be closed off.
+  const int corner = 0;
+  const auto nearCorner = [&](const std::array<BaseLocation, 3>& corners, int)
+  {
+    const Triangle& base = domain.mesh.triangles[corners[0].triangle];
+    const auto k = std::find(base.begin(), base.end(), corner) - base.begin();
+    if (k == 3)
+      return false;
+    for (const BaseLocation& at : corners)
+      if (at.coordinates[k] > 0.9)
+        return true;
+    return false;
+  };
+  SemiRegularMesh mesh, again;
+  ASSERT_TRUE(buildAdaptiveSemiRegularMesh(domain, 6, nearCorner, mesh).ok());
+  ASSERT_TRUE(buildAdaptiveSemiRegularMesh(domain, 6, nearCorner, again).ok());
+  EXPECT_EQ(mesh.triangles, again.triangles);
+  EXPECT_EQ(mesh.level, 6);
+  SemiRegularMesh full;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 6, full).ok());
+  EXPECT_LT(mesh.triangles.size() * 20, full.triangles.size());
+
+  const TriangleMesh drawn = drawnOnDomain(domain, mesh);
+  const SurfaceCheckResult check = checkSurface(drawn); // a T-junction would open the surface
+  EXPECT_TRUE(check.ok()) << check.message;
+  // Flat pieces: the drawn remesh covers the octahedron exactly once.
+  double area = 0.0;
+  for (int t = 0; t < drawn.triangleCount(); ++t)
+  {
+    const Triangle& tri = drawn.triangles[t];
+    const Vec3 n = (drawn.points[tri[1]] - drawn.points[tri[0]]).cross(drawn.points[tri[2]] - drawn.points[tri[0]]);
+    EXPECT_GT(n.dot(drawn.points[tri[0]] + drawn.points[tri[1]] + drawn.points[tri[2]]), 0.0) << "inverted " << t;
+    area += 0.5 * n.norm();
+  }
+  EXPECT_NEAR(area, 8.0 * std::sqrt(3.0) / 2.0, 1e-12);
+  // Levels of triangles sharing an edge differ by at most one.
+  std::map<std::pair<int, int>, int> levelAcross;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      const auto it = levelAcross.find({ b, a });
+      if (it != levelAcross.end())
+        EXPECT_LE(std::abs(it->second - mesh.levelOfTriangle[t]), 1);
+      levelAcross[{ a, b }] = mesh.levelOfTriangle[t];
+    }
+  // Vertex f is still feature f, and a vertex's level is that of its first split.
+  for (int bv = 0; bv < 6; ++bv)
+    EXPECT_EQ(drawn.points[domain.featureIds[bv]], domain.mesh.points[bv]);
+  EXPECT_TRUE(std::is_sorted(mesh.levelOfVertex.begin(), mesh.levelOfVertex.end()));
 }
