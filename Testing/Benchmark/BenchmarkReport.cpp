@@ -185,13 +185,17 @@ const Figure* findFigure(const ModelResult& result, const std::string& name)
 }
 
 /// \brief A figure for the table: counts as integers, the rest with three
-///        decimals.
+///        decimals, or three significant digits below 1 so that small
+///        ratios (a Hausdorff distance over the diagonal) do not all read
+///        0.00x.
 std::string figureCell(const Figure* figure)
 {
   if (!figure)
     return "-";
   const double value = figure->value;
-  return format(value == std::floor(value) && std::abs(value) < 1e15 ? "%.0f" : "%.3f", value);
+  if (value == std::floor(value) && std::abs(value) < 1e15)
+    return format("%.0f", value);
+  return format(std::abs(value) < 1.0 ? "%.3g" : "%.3f", value);
 }
 
 std::string figureTable(const std::vector<ModelResult>& results)

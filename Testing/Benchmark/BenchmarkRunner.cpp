@@ -192,7 +192,7 @@ StageResult* findStage(ModelResult& result, const std::string& name)
 std::string formatProgress(const ModelResult& result, const StageResult& stage)
 {
   char text[200];
-  std::snprintf(text, sizeof text, "%-10s %-12s %9.3f s  %8.1f MB", result.model.c_str(), stage.stage.c_str(),
+  std::snprintf(text, sizeof text, "%-10s %-15s %9.3f s  %8.1f MB", result.model.c_str(), stage.stage.c_str(),
     stage.seconds, stage.peakMB);
   return text;
 }
@@ -288,7 +288,7 @@ double ModelResult::totalSeconds() const
 {
   double total = 0.0;
   for (const StageResult& stage : stages)
-    total += stage.state == StageState::Done ? stage.seconds : 0.0;
+    total += stage.state == StageState::Done && stage.inTotal ? stage.seconds : 0.0;
   return total;
 }
 
@@ -298,7 +298,12 @@ ModelResult runModel(const ModelSpec& spec, const SharedInputs& shared, const st
   ModelResult result;
   result.model = spec.name;
   for (const Stage& stage : stages)
-    result.stages.push_back({ stage.name });
+  {
+    StageResult stageResult;
+    stageResult.stage = stage.name;
+    stageResult.inTotal = stage.inTotal;
+    result.stages.push_back(stageResult);
+  }
   int fds[2];
   if (::pipe(fds) != 0)
   {

@@ -29,6 +29,7 @@ struct StageResult
   double seconds = 0.0;                 ///< Best wall time over `runs` runs.
   int runs = 0;                         ///< Number of timed runs.
   double peakMB = 0.0;                  ///< Peak resident memory while the stage ran.
+  bool inTotal = true;                  ///< Counted in `ModelResult::totalSeconds()` (see `Stage::inTotal`).
 };
 
 /// \brief All stages of one model.
@@ -47,7 +48,7 @@ struct ModelResult
 
   /// \brief True if every applicable stage ran successfully.
   bool ok() const { return error.empty(); }
-  /// \brief Sum of the stages' best times.
+  /// \brief Sum of the best times of the stages counted in the total.
   double totalSeconds() const;
 };
 

@@ -18,6 +18,7 @@
 #include "NetStraightener.h"
 #include "NetTracer.h"
 #include "PatchParameterization.h"
+#include "SemiRegularRemesher.h"
 #include "Status.h"
 #include "SurfaceCheck.h"
 #include "TriangleMesh.h"
@@ -88,7 +89,10 @@ struct ModelContext
   StraightenedNet straight;               ///< `straighten`: the straightened net.
   NetStraightenerReport straightReport;   ///< `straighten`: lengths, area variation, sweeps.
   PatchParameterization parameterization; ///< `parameterize`: base-domain place of every vertex.
-  // Later stages add their outputs here (remesh, ...).
+  SemiRegularMesh remesh;                 ///< `remesh`: the semi-regular connectivity.
+  std::vector<SurfaceSample> remeshSamples; ///< `remesh`: where each remesh vertex lands on the surface.
+  std::vector<Vec3> remeshPoints;         ///< `remesh`: the positions of those places.
+  // Later stages add their outputs here (PCA, ...).
   FigureList figures;                     ///< Per-model numbers the stages report.
 
   /// \brief The surface every stage after `read` works on: the subdivided
@@ -117,6 +121,10 @@ struct Stage
   std::function<Status(ModelContext&)> run;
   /// \brief Whether the stage runs for a model; empty means always.
   std::function<bool(const ModelSpec&)> appliesTo;
+  /// \brief False for a stage that measures the pipeline's results instead
+  ///        of producing them (`remesh_distance`): timed and shown like the
+  ///        others, but left out of the model's total.
+  bool inTotal = true;
 };
 
 /// \brief The stages in pipeline order. Later stages append themselves here.
