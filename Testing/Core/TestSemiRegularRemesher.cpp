@@ -5,6 +5,7 @@
 #include "PatchParameterization.h"
 #include "SemiRegularRemesher.h"
 #include "SurfaceCheck.h"
+#include "SurfaceDistance.h"
 #include "TestMeshes.h"
 
 #include <Eigen/Geometry>
@@ -67,6 +68,42 @@ TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel
   EXPECT_FALSE(buildSemiRegularMesh(domain, -1, bad).ok());
 }
 
+namespace
+{
+
+/// Remesh triangles whose normal points against the input surface under
+/// them (the sum of the normals of the input triangles their corners lie in).
+int trianglesAgainstSurface(const SemiRegularMesh& remesh, const TracedNet& net,
+  const std::vector<SurfaceSample>& samples, const std::vector<Vec3>& positions)
+{
+  int flipped = 0;
+  for (const Triangle& tri : remesh.triangles)
+  {
+    const Vec3 normal = (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
+    Vec3 surfaceNormal = Vec3::Zero();
+    for (int v : tri)
+    {
+      const SurfaceSample& s = samples[v];
+      if (s.vertex[1] < 0)
+        continue; // a landmark: no triangle recorded
+      const Vec3 a = net.mesh.point(s.vertex[0]), b = net.mesh.point(s.vertex[1]), c = net.mesh.point(s.vertex[2]);
+      surfaceNormal += (b - a).cross(c - a);
+    }
+    flipped += normal.dot(surfaceNormal) < 0.0;
+  }
+  return flipped;
+}
+
+TriangleMesh remeshSurface(const SemiRegularMesh& remesh, const std::vector<Vec3>& positions)
+{
+  TriangleMesh mesh;
+  mesh.points = positions;
+  mesh.triangles = remesh.triangles;
+  return mesh;
+}
+
+} // namespace
+
 TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
 {
   CMP_REQUIRE_SHARED_DATA();
@@ -93,25 +130,80 @@ TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
     const std::vector<Vec3> positions = samplePositions(straight.net, samples);
     for (int f = 0; f < domain.mesh.vertexCount(); ++f)
       EXPECT_EQ(positions[f], data.mesh.points[landmarks[f]]) << name << " landmark " << f;
-    // Normals against the surface under each remesh triangle.
-    int flipped = 0;
-    for (const Triangle& tri : remesh.triangles)
-    {
-      const Vec3 normal = (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
-      Vec3 surfaceNormal = Vec3::Zero();
-      for (int v : tri)
-      {
-        const SurfaceSample& s = samples[v];
-        if (s.vertex[1] < 0)
-          continue; // a landmark: no triangle recorded
-        const Vec3 a = straight.net.mesh.point(s.vertex[0]), b = straight.net.mesh.point(s.vertex[1]),
-                   c = straight.net.mesh.point(s.vertex[2]);
-        surfaceNormal += (b - a).cross(c - a);
-      }
-      flipped += normal.dot(surfaceNormal) < 0.0;
-    }
-    std::cout << name << ": level " << level << ", " << remesh.vertexCount() << " vertices, placed in " << seconds
-              << " s, " << flipped << " triangles against the surface normal\n";
+
+    // On the input surface, checked against the input itself.
+    const double diagonal = boundingBoxDiagonal(data.mesh);
+    const ClosestPointQuery input(data.mesh);
+    double farthest = 0.0;
+    for (const Vec3& p : positions)
+      farthest = std::max(farthest, input.closest(p).distance);
+    EXPECT_LT(farthest, 1e-6 * diagonal) << name;
+
+    // Known limit: landmark-free protrusions (tails, ears, horns) crowd in
+    // the patch maps and get few samples, so the input's tips are far from
+    // the remesh (issue 5 asks for 1% at level 5; see known-issues.md).
+    // The remesh itself stays close to the input.
+    const SurfaceDistance distance = surfaceDistance(remeshSurface(remesh, positions), data.mesh);
+    EXPECT_LT(distance.aToB, 0.025 * diagonal) << name;
+    EXPECT_LT(distance.hausdorff(), 0.1 * diagonal) << name;
+
+    // Known limit: where a patch is a long thin band (the layout of 381 on
+    // a model in another pose) the uniform samples make needle triangles,
+    // some of which fold (Documentation/known-issues.md). Bounded here so
+    // that it cannot grow unnoticed.
+    const int flipped = trianglesAgainstSurface(remesh, straight.net, samples, positions);
+    EXPECT_LT(flipped, (name == "spot" ? 0.012 : 0.005) * remesh.triangles.size()) << name;
+    std::cout << name << ": level " << level << ", " << remesh.vertexCount() << " vertices placed in " << seconds
+              << " s, Hausdorff distance " << distance.hausdorff() / diagonal << " of the diagonal (" << distance.aToB / diagonal << " remesh to input, " << distance.bToA / diagonal << " input to remesh), " << flipped
+              << " triangles against the surface normal\n";
+  }
+}
+
+TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangle)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const test::LandmarkedModel source = test::landmarkedRealModel("381");
+  BaseDomain domain;
+  ASSERT_TRUE(buildBaseDomain(source.data.mesh, source.landmarks, domain).ok());
+  const std::vector<std::string> names{ "381", "387", "spot" };
+  std::vector<test::LandmarkedModel> models;
+  std::vector<TracedNet> nets(names.size());
+  std::vector<PatchParameterization> parameterizations(names.size());
+  std::vector<ParameterizedSurface> surfaces(names.size());
+  std::vector<const ParameterizedSurface*> collection;
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    models.push_back(test::landmarkedRealModel(names[i]));
+    TracedNet traced;
+    ASSERT_TRUE(traceFeatureNet(models[i].data.mesh, models[i].landmarks, domain, traced).ok());
+    StraightenedNet straight;
+    ASSERT_TRUE(straightenNet(traced, domain, straight).ok());
+    nets[i] = std::move(straight.net);
+    ASSERT_TRUE(parameterizePatches(nets[i], domain, parameterizations[i]).ok());
+    ASSERT_TRUE(surfaces[i].build(nets[i], domain, parameterizations[i]).ok());
+    collection.push_back(&surfaces[i]);
+  }
+  const double tolerance = 0.002;
+  SemiRegularMesh adaptive, uniform;
+  ASSERT_TRUE(buildAdaptiveSemiRegularMesh(domain, 6, flatnessSplitRule(collection, tolerance), adaptive).ok());
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 6, uniform).ok());
+  EXPECT_EQ(adaptive.level, 6);
+  EXPECT_LT(adaptive.triangles.size() * 3, uniform.triangles.size());
+
+  // Every leaf the rule left alone is flat enough on every model.
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    std::vector<SurfaceSample> samples;
+    ASSERT_TRUE(placeOnSurface(adaptive, nets[i], domain, parameterizations[i], samples).ok());
+    const std::vector<Vec3> positions = samplePositions(nets[i], samples);
+    const TriangleMesh mesh = remeshSurface(adaptive, positions);
+    EXPECT_TRUE(checkSurface(mesh).ok()) << names[i] << ": " << checkSurface(mesh).message;
+    const double diagonal = boundingBoxDiagonal(models[i].data.mesh);
+    const SurfaceDistance distance = surfaceDistance(mesh, models[i].data.mesh);
+    EXPECT_LT(distance.aToB, 0.025 * diagonal) << names[i];
+    std::cout << names[i] << ": adaptive to " << tolerance << " of the diagonal: " << adaptive.triangles.size()
+              << " triangles (uniform level 6: " << uniform.triangles.size() << "), Hausdorff distance "
+              << distance.hausdorff() / diagonal << " of the diagonal\n";
   }
 }
 
