@@ -591,6 +591,12 @@ Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const
   ParameterizedSurface surface;
   if (Status s = surface.build(net, domain, parameterization); !s.ok())
     return s;
+  return placeOnSurface(remesh, surface, samples);
+}
+
+Status placeOnSurface(
+  const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfaceSample>& samples)
+{
   samples.assign(remesh.vertexCount(), SurfaceSample{});
   for (int v = 0; v < remesh.vertexCount(); ++v)
     if (Status s = surface.locate(remesh.locations[v], samples[v]); !s.ok())

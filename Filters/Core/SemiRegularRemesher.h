@@ -138,6 +138,10 @@ SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& mode
 Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const BaseDomain& domain,
   const PatchParameterization& parameterization, std::vector<SurfaceSample>& samples);
 
+/// \brief Places every vertex of `remesh` on a model already indexed.
+Status placeOnSurface(
+  const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfaceSample>& samples);
+
 /// \brief The positions of `samples` on the mesh of `net`.
 std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfaceSample>& samples);
 

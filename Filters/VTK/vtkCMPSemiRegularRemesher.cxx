@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -387,58 +388,69 @@ RemeshQuality measureQuality(const cmp::SemiRegularMesh& remesh, const std::vect
   return quality;
 }
 
-/// The filter's work on one model; reports progress in [0, 1] for it.
+/// The filter's work on one model, in two steps: `prepare()` rebuilds the
+/// layout and its map (every model is prepared before the shared
+/// connectivity is built, because adaptive refinement asks all of them),
+/// `place()` puts the shared remesh on it. Not movable: the parameterized
+/// surface points into the net.
 class ModelRemesher
 {
 public:
-  ModelRemesher(const cmp::BaseDomain& domain, const SharedRemesh& shared, bool computeDistance,
-    std::function<void(double)> progress)
+  ModelRemesher(const cmp::BaseDomain& domain, vtkPolyData* input)
     : domain_(domain)
-    , shared_(shared)
-    , computeDistance_(computeDistance)
-    , progress_(std::move(progress))
+    , input_(input)
   {
   }
+  ModelRemesher(const ModelRemesher&) = delete;
+  ModelRemesher& operator=(const ModelRemesher&) = delete;
 
-  cmp::Status run(vtkPolyData* input, vtkPolyData* output)
+  const cmp::ParameterizedSurface& surface() const { return surface_; }
+
+  cmp::Status prepare()
   {
     const Clock::time_point start = Clock::now();
-    cmp::TriangleMesh mesh;
     cmp::LandmarkList landmarks;
     std::vector<int> patchIds;
-    cmp::PatchParameterization parameterization;
-    cmp::Status status = toParameterizedSurface(input, mesh);
+    cmp::Status status = toParameterizedSurface(input_, mesh_);
     if (status.ok())
-      status = cmp::bridge::readLandmarks(input, landmarks);
+      status = cmp::bridge::readLandmarks(input_, landmarks);
     if (status.ok())
       status = cmp::checkBaseDomain(domain_, static_cast<int>(landmarks.size()));
     if (status.ok())
-      status = cmp::bridge::readPatchIds(input, patchIds);
+      status = cmp::bridge::readPatchIds(input_, patchIds);
     if (status.ok())
-      status = readParameterization(input, domain_.mesh.triangleCount(), parameterization);
+      status = readParameterization(input_, domain_.mesh.triangleCount(), parameterization_);
     // The core only rebuilds a layout that is one; checking first names the
     // problem in the user's terms (for example L0 from another collection).
     if (status.ok())
-      if (const std::string problem = layoutProblem(cmp::toLabelledSurface(mesh, patchIds, landmarks), domain_);
+      if (const std::string problem = layoutProblem(cmp::toLabelledSurface(mesh_, patchIds, landmarks), domain_);
           !problem.empty())
         status = cmp::Status::error("the input's PatchId layout is not equivalent to L0: " + problem);
-    cmp::TracedNet net;
     if (status.ok())
-      status = cmp::layoutFromPatchIds(mesh, patchIds, landmarks, domain_, net);
-    if (!status.ok())
-      return status;
-    const double rebuildSeconds = secondsSince(start);
-    progress_(0.3);
+      status = cmp::layoutFromPatchIds(mesh_, patchIds, landmarks, domain_, net_);
+    if (status.ok())
+      if (cmp::Status built = surface_.build(net_, domain_, parameterization_); !built.ok())
+        status = cmp::Status::error("cannot place the remesh on the input (BaseTriangle and BaseCoordinates do not "
+                                    "fit its PatchId): " +
+          built.message());
+    rebuildSeconds_ = secondsSince(start);
+    return status;
+  }
 
+  cmp::Status place(const SharedRemesh& shared, bool computeDistance, vtkPolyData* output,
+    const std::function<void(double)>& progress)
+  {
     const Clock::time_point placementStart = Clock::now();
     std::vector<cmp::SurfaceSample> samples;
-    if (cmp::Status placed = cmp::placeOnSurface(shared_.mesh, net, domain_, parameterization, samples); !placed.ok())
+    if (cmp::Status placed = cmp::placeOnSurface(shared.mesh, surface_, samples); !placed.ok())
       return cmp::Status::error("cannot place the remesh on the input (BaseTriangle and BaseCoordinates do not "
                                 "fit its PatchId): " +
         placed.message());
-    const std::vector<cmp::Vec3> positions = cmp::samplePositions(net, samples);
+    std::vector<cmp::Vec3> positions(samples.size());
+    for (std::size_t v = 0; v < samples.size(); ++v)
+      positions[v] = surface_.position(samples[v]);
     const double placementSeconds = secondsSince(placementStart);
-    progress_(0.7);
+    progress(0.5);
 
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();
@@ -447,47 +459,50 @@ public:
       points->SetPoint(static_cast<vtkIdType>(v), positions[v].data());
     auto remesh = vtkSmartPointer<vtkPolyData>::New();
     remesh->SetPoints(points);
-    remesh->SetPolys(shared_.polys);
-    fillPointData(remesh->GetPointData(), input->GetPointData(), samples, shared_);
-    remesh->GetCellData()->AddArray(shared_.patchIds);
-    remesh->GetCellData()->AddArray(shared_.levels);
-    const RemeshQuality quality = measureQuality(shared_.mesh, positions, samples, net.mesh);
-    progress_(0.8);
+    remesh->SetPolys(shared.polys);
+    fillPointData(remesh->GetPointData(), input_->GetPointData(), samples, shared);
+    remesh->GetCellData()->AddArray(shared.patchIds);
+    remesh->GetCellData()->AddArray(shared.levels);
+    const RemeshQuality quality = measureQuality(shared.mesh, positions, samples, net_.mesh);
+    progress(0.7);
 
     vtkFieldData* field = remesh->GetFieldData();
-    cmp::bridge::setFieldValue(field, "RemeshLevel", shared_.mesh.level);
-    cmp::bridge::setFieldValue(field, "VertexCount", shared_.mesh.vertexCount());
-    cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(shared_.mesh.triangles.size()));
+    cmp::bridge::setFieldValue(field, "RemeshLevel", shared.mesh.level);
+    cmp::bridge::setFieldValue(field, "VertexCount", shared.mesh.vertexCount());
+    cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(shared.mesh.triangles.size()));
     cmp::bridge::setFieldValue(field, "FlippedTriangles", quality.flippedTriangles);
     cmp::bridge::setFieldValue(field, "MinimumAngle", quality.minimumAngleDegrees);
     cmp::bridge::setFieldValue(field, "MeanShapeQuality", quality.meanShapeQuality);
-    cmp::bridge::setFieldValue(field, "RebuildSeconds", rebuildSeconds);
+    cmp::bridge::setFieldValue(field, "RebuildSeconds", rebuildSeconds_);
     cmp::bridge::setFieldValue(field, "PlacementSeconds", placementSeconds);
-    if (computeDistance_)
+    if (computeDistance)
     {
       // Sampled both ways: input to remesh catches features the remesh cuts
       // off, remesh to input catches triangles spanning concave regions.
       const Clock::time_point distanceStart = Clock::now();
       const cmp::SurfaceDistance distance =
-        cmp::surfaceDistance(mesh, cmp::TriangleMesh{ positions, shared_.mesh.triangles });
+        cmp::surfaceDistance(mesh_, cmp::TriangleMesh{ positions, shared.mesh.triangles });
       const double hausdorff = distance.hausdorff();
-      const double diagonal = cmp::boundingBoxDiagonal(mesh);
+      const double diagonal = cmp::boundingBoxDiagonal(mesh_);
       cmp::bridge::setFieldValue(field, "HausdorffDistance", hausdorff);
       cmp::bridge::setFieldValue(field, "HausdorffDistanceRelative", diagonal > 0.0 ? hausdorff / diagonal : 0.0);
       cmp::bridge::setFieldValue(field, "MeanDistance", 0.5 * (distance.meanAToB + distance.meanBToA));
       cmp::bridge::setFieldValue(field, "DistanceSeconds", secondsSince(distanceStart));
     }
-    cmp::bridge::setFieldValue(field, "TotalSeconds", secondsSince(start));
+    cmp::bridge::setFieldValue(field, "TotalSeconds", rebuildSeconds_ + secondsSince(placementStart));
     output->ShallowCopy(remesh);
-    progress_(1.0);
+    progress(1.0);
     return {};
   }
 
 private:
   const cmp::BaseDomain& domain_;
-  const SharedRemesh& shared_;
-  bool computeDistance_ = true;
-  std::function<void(double)> progress_;
+  vtkPolyData* input_ = nullptr;
+  cmp::TriangleMesh mesh_;
+  cmp::TracedNet net_;
+  cmp::PatchParameterization parameterization_;
+  cmp::ParameterizedSurface surface_;
+  double rebuildSeconds_ = 0.0;
 };
 
 /// "block 2 ('387')" for messages about the surface at `index` (counting
@@ -520,23 +535,25 @@ int vtkCMPSemiRegularRemesher::RequestData(
     vtkErrorMacro("Level must be between 0 and 8 (it is " << this->Level << ")");
     return 0;
   }
+  if (!(this->AdaptiveTolerance >= 0.0) || !std::isfinite(this->AdaptiveTolerance))
+  {
+    vtkErrorMacro("AdaptiveTolerance must be 0 (uniform) or a positive fraction of the bounding-box diagonal (it is "
+      << this->AdaptiveTolerance << ")");
+    return 0;
+  }
   cmp::BaseDomain domain;
-  SharedRemesh shared;
-  cmp::Status status = cmp::bridge::toBaseDomain(baseInput, domain);
-  if (status.ok())
-    status = cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
-  if (!status.ok())
+  if (cmp::Status status = cmp::bridge::toBaseDomain(baseInput, domain); !status.ok())
   {
     vtkErrorMacro(<< status.message());
     return 0;
   }
-  vtkSmartPointer<vtkPolyData> connectivity = shared.build(domain);
 
   // The surfaces to remesh: the input itself, or every leaf of a multiblock.
   auto* multiblockInput = vtkMultiBlockDataSet::SafeDownCast(input);
   auto* multiblockOutput = vtkMultiBlockDataSet::SafeDownCast(output);
   vtkSmartPointer<vtkDataObjectTreeIterator> leaves;
-  int leafCount = 1;
+  std::vector<std::unique_ptr<ModelRemesher>> models;
+  std::vector<std::string> names;
   if (multiblockInput)
   {
     if (!multiblockOutput)
@@ -546,10 +563,21 @@ int vtkCMPSemiRegularRemesher::RequestData(
     }
     leaves = vtk::TakeSmartPointer(multiblockInput->NewTreeIterator());
     leaves->SkipEmptyNodesOn();
-    leafCount = 0;
-    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
-      ++leafCount;
-    if (leafCount == 0)
+    int index = 0;
+    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem(), ++index)
+    {
+      auto* surface = vtkPolyData::SafeDownCast(leaves->GetCurrentDataObject());
+      if (!surface)
+      {
+        vtkErrorMacro(<< blockName(leaves, index) << ": is a " << leaves->GetCurrentDataObject()->GetClassName()
+                      << ", not a vtkPolyData surface");
+        multiblockOutput->Initialize();
+        return 0;
+      }
+      models.push_back(std::make_unique<ModelRemesher>(domain, surface));
+      names.push_back(blockName(leaves, index) + ": ");
+    }
+    if (models.empty())
     {
       vtkErrorMacro("the input multiblock holds no surfaces");
       return 0;
@@ -560,49 +588,62 @@ int vtkCMPSemiRegularRemesher::RequestData(
     vtkErrorMacro("input 0 must be a vtkPolyData or a vtkMultiBlockDataSet of them");
     return 0;
   }
-
-  int model = 0;
-  const auto remeshOne = [&](vtkPolyData* surface, vtkPolyData* result)
-  {
-    ModelRemesher remesher(domain, shared, this->ComputeDistance,
-      [this, &model, leafCount](double fraction) { this->UpdateProgress((model + fraction) / leafCount); });
-    const cmp::Status s = remesher.run(surface, result);
-    ++model;
-    return s;
-  };
-  if (!multiblockInput)
-  {
-    status = remeshOne(vtkPolyData::SafeDownCast(input), vtkPolyData::SafeDownCast(output));
-    if (!status.ok())
-    {
-      vtkErrorMacro(<< status.message());
-      output->Initialize();
-      return 0;
-    }
-  }
   else
   {
-    // Same tree, names and other block metadata; leaves filled below.
-    multiblockOutput->CopyStructure(multiblockInput);
-    int index = 0;
-    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem(), ++index)
-    {
-      auto* surface = vtkPolyData::SafeDownCast(leaves->GetCurrentDataObject());
-      if (!surface)
-        status = cmp::Status::error(std::string("is a ") + leaves->GetCurrentDataObject()->GetClassName() +
-          ", not a vtkPolyData surface");
-      vtkNew<vtkPolyData> result;
-      if (status.ok())
-        status = remeshOne(surface, result);
-      if (!status.ok())
-      {
-        vtkErrorMacro(<< blockName(leaves, index) << ": " << status.message());
-        multiblockOutput->Initialize();
-        return 0;
-      }
-      multiblockOutput->SetDataSet(leaves, result);
-    }
+    models.push_back(std::make_unique<ModelRemesher>(domain, vtkPolyData::SafeDownCast(input)));
+    names.emplace_back();
   }
+
+  const auto fail = [&](const std::string& message)
+  {
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return 0;
+  };
+  const double modelCount = static_cast<double>(models.size());
+  for (std::size_t m = 0; m < models.size(); ++m)
+  {
+    if (cmp::Status status = models[m]->prepare(); !status.ok())
+      return fail(names[m] + status.message());
+    this->UpdateProgress(0.3 * (m + 1) / modelCount);
+  }
+
+  // One connectivity for the whole collection: with a tolerance, a triangle
+  // is split when any model needs it.
+  SharedRemesh shared;
+  cmp::Status status;
+  if (this->AdaptiveTolerance > 0.0)
+  {
+    std::vector<const cmp::ParameterizedSurface*> surfaces;
+    for (const auto& model : models)
+      surfaces.push_back(&model->surface());
+    status = cmp::buildAdaptiveSemiRegularMesh(
+      domain, this->Level, cmp::flatnessSplitRule(surfaces, this->AdaptiveTolerance), shared.mesh);
+  }
+  else
+    status = cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
+  if (!status.ok())
+    return fail(status.message());
+  vtkSmartPointer<vtkPolyData> connectivity = shared.build(domain);
+  this->UpdateProgress(0.4);
+
+  std::vector<vtkSmartPointer<vtkPolyData>> results;
+  for (std::size_t m = 0; m < models.size(); ++m)
+  {
+    results.push_back(vtkSmartPointer<vtkPolyData>::New());
+    const auto progress = [this, m, modelCount](double f) { this->UpdateProgress(0.4 + 0.6 * (m + f) / modelCount); };
+    if (cmp::Status placed = models[m]->place(shared, this->ComputeDistance, results.back(), progress); !placed.ok())
+      return fail(names[m] + placed.message());
+  }
+  if (multiblockInput)
+  {
+    multiblockOutput->CopyStructure(multiblockInput); // same tree, names and other block metadata
+    std::size_t m = 0;
+    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
+      multiblockOutput->SetDataSet(leaves, results[m++]);
+  }
+  else
+    output->ShallowCopy(results.front());
   connectivityOutput->ShallowCopy(connectivity);
   this->UpdateProgress(1.0);
   return 1;
@@ -612,5 +653,6 @@ void vtkCMPSemiRegularRemesher::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Level: " << this->Level << "\n";
+  os << indent << "AdaptiveTolerance: " << this->AdaptiveTolerance << "\n";
   os << indent << "ComputeDistance: " << this->ComputeDistance << "\n";
 }

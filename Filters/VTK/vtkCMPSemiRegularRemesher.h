@@ -58,6 +58,18 @@ public:
   /// \brief Number of 1-to-4 quadrisections of `L0`.
   vtkGetMacro(Level, int);
 
+  /// \brief Adaptive refinement (default 0: uniform). With a value t > 0,
+  ///        `Level` is the maximum level and a triangle is quadrisected
+  ///        only while, on any model of the input, the surface at one of
+  ///        its edge midpoints or its centroid is farther than t times that
+  ///        model's bounding-box diagonal from the flat triangle. Neighbours
+  ///        then differ by at most one level and T-junctions are closed by
+  ///        bisection, so every model still shares one connectivity (give
+  ///        the whole collection as one multiblock for that).
+  vtkSetMacro(AdaptiveTolerance, double);
+  /// \brief Adaptive refinement tolerance (0: uniform).
+  vtkGetMacro(AdaptiveTolerance, double);
+
   /// \brief Measure how far each remesh is from its input (default on):
   ///        field arrays `HausdorffDistance`, `HausdorffDistanceRelative`
   ///        (divided by the input's bounding-box diagonal), `MeanDistance`
@@ -82,5 +94,6 @@ private:
   void operator=(const vtkCMPSemiRegularRemesher&) = delete;
 
   int Level = 4;
+  double AdaptiveTolerance = 0.0;
   bool ComputeDistance = true;
 };

@@ -31,6 +31,7 @@
 #include <cstring>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <set>
 
 using namespace cmp::test;
@@ -489,6 +490,60 @@ TEST(SemiRegularRemesherFilter, RemeshesModel387AtLevel5)
             << fieldValue(remesh, "HausdorffDistanceRelative") << " of the diagonal\n";
 }
 
+TEST(SemiRegularRemesherFilter, AdaptiveRemeshIsSharedByTheWholeMultiblock)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const std::string folder = sharedDataDir() + "/shrec07-fourleg/";
+  vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(readLandmarked(folder + "381.off", folder + "381.vts"));
+  const std::vector<std::string> models = { "381", "387" };
+  vtkNew<vtkMultiBlockDataSet> group;
+  for (unsigned int b = 0; b < models.size(); ++b)
+  {
+    group->SetBlock(b, parameterized(readLandmarked(folder + models[b] + ".off", folder + models[b] + ".vts"), l0));
+    group->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), models[b].c_str());
+  }
+  const int maximumLevel = 5;
+  vtkNew<vtkCMPSemiRegularRemesher> remesher;
+  remesher->SetInputData(0, group);
+  remesher->SetInputData(1, l0);
+  remesher->SetLevel(maximumLevel);
+  remesher->SetAdaptiveTolerance(0.002);
+  const RunResult result = run(remesher);
+  ASSERT_TRUE(result.succeeded) << result.error;
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(remesher->GetOutputDataObject(0));
+  ASSERT_NE(blocks, nullptr);
+  auto* first = vtkPolyData::SafeDownCast(blocks->GetBlock(0));
+  auto* second = vtkPolyData::SafeDownCast(blocks->GetBlock(1));
+  ASSERT_TRUE(first && second);
+  expectSameConnectivity(first, second, "adaptive blocks");
+  expectSameConnectivity(first, vtkPolyData::SafeDownCast(remesher->GetOutputDataObject(1)), "output 1");
+  // Fewer triangles than uniform, levels from coarse to the maximum.
+  EXPECT_LT(first->GetNumberOfCells(), triangleCount(l0, maximumLevel) / 2);
+  vtkDataArray* levels = first->GetCellData()->GetArray("Level");
+  ASSERT_NE(levels, nullptr);
+  double range[2];
+  levels->GetRange(range);
+  EXPECT_EQ(range[1], maximumLevel);
+  EXPECT_LT(range[0], maximumLevel - 1);
+  // Closed: every edge has two triangles (a T-junction would leave one).
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUses;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < first->GetNumberOfCells(); ++c)
+  {
+    first->GetCellPoints(c, ids);
+    for (int k = 0; k < 3; ++k)
+      ++edgeUses[std::minmax(ids->GetId(k), ids->GetId((k + 1) % 3))];
+  }
+  for (const auto& [edge, uses] : edgeUses)
+    ASSERT_EQ(uses, 2) << "edge " << edge.first << "-" << edge.second;
+  for (unsigned int b = 0; b < 2; ++b)
+    std::cout << models[b] << ": adaptive to 0.002 of the diagonal, maximum level " << maximumLevel << ": "
+              << first->GetNumberOfCells() << " triangles (uniform: " << triangleCount(l0, maximumLevel)
+              << "), Hausdorff "
+              << fieldValue(vtkPolyData::SafeDownCast(blocks->GetBlock(b)), "HausdorffDistanceRelative")
+              << " of the diagonal\n";
+}
+
 TEST(SemiRegularRemesherFilter, ReportsBadInput)
 {
   const std::string folder = examplesDir() + "/";
@@ -608,6 +663,12 @@ TEST(SemiRegularRemesherFilter, ReportsBadInput)
   expectError(input, l0, "Level must be between 0 and 8 (it is 9)");
   remesher->SetLevel(-1);
   expectError(input, l0, "Level must be between 0 and 8 (it is -1)");
+  remesher->SetLevel(3);
+  remesher->SetAdaptiveTolerance(-0.1);
+  expectError(input, l0, "AdaptiveTolerance must be 0 (uniform) or a positive fraction");
+  remesher->SetAdaptiveTolerance(std::numeric_limits<double>::quiet_NaN());
+  expectError(input, l0, "AdaptiveTolerance must be 0 (uniform) or a positive fraction");
+  remesher->SetAdaptiveTolerance(0.0);
 
   // Level 0 remeshes with L0 itself: the landmarks only.
   remesher->SetLevel(0);
