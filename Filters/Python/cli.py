@@ -4,19 +4,24 @@ collection of landmarked surfaces and write the results and a JSON report.
 Stages per model: read, landmarks, check, check against the base domain,
 trace the patch layout (NAME.net.vtp, NAME.curves.vtp), straighten it and
 map every patch onto its base triangle (NAME.param.vtp,
-NAME.straight-curves.vtp).
+NAME.straight-curves.vtp). Then every straightened model is remeshed at once
+with one semi-regular connectivity (NAME.remesh.vtp, collection.vtm,
+remesh_connectivity.vtp).
 
 Usage:
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
-                    [--base-domain L0.vtp | --base-domain-from N] --output DIR
+                    [--base-domain L0.vtp | --base-domain-from N] [--level J]
+                    [--adaptive-tolerance T] --output DIR
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others; the exit status is 1 if any
 model failed, 2 for a usage error and 3 if the base domain could not be made.
+If the collection's remeshing fails, every model taking part in it fails.
 """
 
 import argparse
 import json
+import math
 import os
 import sys
 import time
@@ -24,12 +29,15 @@ import time
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand, vtkIntArray, vtkLogger
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet
+from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter, vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 from . import CMPFilters as cmp
 
 
 EXIT_NO_BASE_DOMAIN = 3
+DEFAULT_LEVEL = 4
+MAX_LEVEL = 8
 
 
 class StageError(Exception):
@@ -71,6 +79,7 @@ class Model:
         self.landmark_path = landmark_path
         self.name = os.path.splitext(os.path.basename(mesh_path))[0]
         self.surface = None
+        self.parameterized = None  # NetStraightener's surface, the remesher's input
         self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
 
     def timed(self, stage, function, *args):
@@ -84,6 +93,7 @@ class Model:
         self.report["status"] = "failed"
         self.report["error"] = str(error)
         self.surface = None
+        self.parameterized = None
 
 
 def read_landmarked_surface(model):
@@ -195,6 +205,72 @@ def straighten_net(model, domain, traced, output_folder):
     }
     if not model.report["straighten"]["net_valid"]:
         raise StageError("the straightened net failed the layout check")
+    model.parameterized = surface
+
+
+def _significant(value, digits=6):
+    return float("%.*g" % (digits, value))
+
+
+def remesh_collection(models, domain, level, adaptive_tolerance, output_folder):
+    """SemiRegularRemesher on every straightened model at once (a multiblock
+    with one block per model, named after it), so that they all get the same
+    connectivity, adaptive refinement included. Writes NAME.remesh.vtp per
+    model, collection.vtm (all of them) and remesh_connectivity.vtp (the
+    connectivity on L0); fills each model's "remesh" figures and returns the
+    collection's (size, time). Raises StageError if the filter fails or a
+    file cannot be written."""
+    blocks = vtkMultiBlockDataSet()
+    for index, model in enumerate(models):
+        blocks.SetBlock(index, model.parameterized)
+        blocks.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), model.name)
+    remesher = cmp.vtkCMPSemiRegularRemesher()
+    remesher.SetInputData(0, blocks)
+    remesher.SetInputData(1, domain)
+    remesher.SetLevel(level)
+    remesher.SetAdaptiveTolerance(adaptive_tolerance)
+    remesher.ComputeDistanceOn()
+    start = time.perf_counter()
+    remeshes = _run(remesher)
+    seconds = time.perf_counter() - start
+
+    figures = []
+    for index, model in enumerate(models):
+        remesh = remeshes.GetBlock(index)
+        name = remeshes.GetMetaData(index).Get(vtkCompositeDataSet.NAME()) if remeshes.HasMetaData(index) else None
+        if remesh is None or name != model.name:
+            raise StageError("the remesher's block %d is not model %s" % (index, model.name))
+        field = remesh.GetFieldData()
+
+        def value(array_name):
+            return field.GetArray(array_name).GetValue(0)
+
+        figures.append({
+            "level": int(value("RemeshLevel")),
+            "vertices": int(value("VertexCount")),
+            "triangles": int(value("TriangleCount")),
+            "hausdorff_distance": _significant(value("HausdorffDistance")),
+            "hausdorff_per_diagonal": _significant(value("HausdorffDistanceRelative")),
+            "mean_distance": _significant(value("MeanDistance")),
+            # Reported, not a failure, as for the straightener.
+            "flipped_triangles": int(value("FlippedTriangles")),
+            "min_angle_degrees": round(value("MinimumAngle"), 4),
+            "mean_shape_quality": round(value("MeanShapeQuality"), 4),
+            "seconds": round(value("TotalSeconds"), 4),
+        })
+        write_polydata(remesh, os.path.join(output_folder, model.name + ".remesh.vtp"))
+    write_multiblock(remeshes, os.path.join(output_folder, "collection.vtm"))
+    connectivity = remesher.GetOutputDataObject(1)
+    write_polydata(connectivity, os.path.join(output_folder, "remesh_connectivity.vtp"))
+    # Only a complete stage gives figures.
+    for model, model_figures in zip(models, figures):
+        model.report["remesh"] = model_figures
+        model.report["seconds"]["remesh"] = model_figures["seconds"]
+    return {
+        "vertices": connectivity.GetNumberOfPoints(),
+        "triangles": connectivity.GetNumberOfCells(),
+        "seconds": round(seconds, 4),
+    }
 
 
 def describe_base_domain(domain, source):
@@ -220,6 +296,17 @@ def write_polydata(polydata, path):
         raise StageError("cannot write '%s'" % path)
 
 
+def write_multiblock(data, path):
+    """Writes PATH.vtm and its pieces in a folder PATH without the extension;
+    binary, not appended (see Documentation/known-issues.md)."""
+    writer = vtkXMLMultiBlockDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.SetDataModeToBinary()
+    if not writer.Write():
+        raise StageError("cannot write '%s'" % path)
+
+
 def parse_arguments(argv):
     parser = argparse.ArgumentParser(
         prog="consistent-remesh",
@@ -233,6 +320,13 @@ def parse_arguments(argv):
     source = parser.add_mutually_exclusive_group()
     source.add_argument("--base-domain", help="base domain L0 (.vtp with FeatureId, or .obj/.off: vertex i = landmark i)")
     source.add_argument("--base-domain-from", type=int, metavar="N", help="build L0 from the N-th model (0-based)")
+    parser.add_argument("--level", type=int, default=DEFAULT_LEVEL, metavar="J",
+                        help="remesh with L0 refined J times by 1-to-4 quadrisection, 0 to %d (default %d)"
+                        % (MAX_LEVEL, DEFAULT_LEVEL))
+    parser.add_argument("--adaptive-tolerance", type=float, default=0.0, metavar="T",
+                        help="refine adaptively, J being the maximum level: split a triangle while on any model the "
+                        "surface is farther than T times that model's bounding-box diagonal from it (e.g. 0.002; "
+                        "default 0: uniform)")
     parser.add_argument("--output", required=True, help="output folder")
     args = parser.parse_args(argv)
     if not args.mesh:
@@ -248,6 +342,12 @@ def parse_arguments(argv):
     if args.base_domain_from is not None and not 0 <= args.base_domain_from < len(args.mesh):
         parser.error("--base-domain-from %d: give the 0-based index of one of the %d meshes (0 to %d)"
                      % (args.base_domain_from, len(args.mesh), len(args.mesh) - 1))
+    if not 0 <= args.level <= MAX_LEVEL:
+        parser.error("--level %d: give a level from 0 to %d (a remesh has 2 + T*4^J/2 vertices for the T "
+                     "triangles of L0)" % (args.level, MAX_LEVEL))
+    if not (math.isfinite(args.adaptive_tolerance) and args.adaptive_tolerance >= 0):
+        parser.error("--adaptive-tolerance %s: give 0 (uniform) or a positive fraction of each model's bounding-box "
+                     "diagonal, e.g. 0.002" % args.adaptive_tolerance)
     if os.path.exists(args.output) and not os.path.isdir(args.output):
         parser.error("--output %s exists and is not a folder" % args.output)
     return args
@@ -304,9 +404,26 @@ def main(argv=None):
             traced = trace_net(model, domain, args.output)
             print("%s: straightening the net" % model.name, flush=True)
             straighten_net(model, domain, traced, args.output)
-            model.report["status"] = "ok"
         except StageError as error:
             model.fail(error)
+
+    # One run of the remesher for the whole collection: one connectivity.
+    ready = [m for m in models if m.parameterized is not None]
+    report["remesh"] = {"level": args.level, "adaptive_tolerance": args.adaptive_tolerance,
+                        "models": [m.name for m in ready]}
+    if ready:
+        adaptive = " (adaptive, tolerance %g)" % args.adaptive_tolerance if args.adaptive_tolerance > 0 else ""
+        print("remeshing %d model%s at level %d%s"
+              % (len(ready), "" if len(ready) == 1 else "s", args.level, adaptive), flush=True)
+        try:
+            report["remesh"].update(remesh_collection(ready, domain, args.level, args.adaptive_tolerance,
+                                                      args.output))
+            for model in ready:
+                model.report["status"] = "ok"
+        except StageError as error:
+            report["remesh"]["error"] = str(error)
+            for model in ready:
+                model.fail("remeshing the collection failed: %s" % error)
 
     for model in models:
         report["models"][model.name] = model.report
@@ -328,14 +445,24 @@ def print_summary(models, report):
     else:
         print("base domain: %d vertices, %d triangles, %d edges (%s)"
               % (domain["vertices"], domain["triangles"], domain["edges"], domain["source"]))
+    remesh = report.get("remesh", {})
+    if "error" in remesh:
+        print("remesh: FAILED: %s" % remesh["error"])
+    elif "vertices" in remesh:
+        adaptive = " (adaptive, tolerance %g)" % remesh["adaptive_tolerance"] if remesh["adaptive_tolerance"] else ""
+        print("remesh: level %d%s, %d vertices, %d triangles per model (%d models, %.3f s)"
+              % (remesh["level"], adaptive, remesh["vertices"], remesh["triangles"], len(remesh["models"]),
+                 remesh["seconds"]))
     width = max(len(m.name) for m in models)
-    print("%-*s  %8s  %8s  %11s  %12s  %s"
-          % (width, "model", "vertices", "seconds", "net/sqrt(A)", "straightened", "result"))
+    print("%-*s  %8s  %8s  %11s  %12s  %16s  %s"
+          % (width, "model", "vertices", "seconds", "net/sqrt(A)", "straightened", "Hausdorff/diag %", "result"))
     for model in models:
         r = model.report
         seconds = sum(r["seconds"].values())
         result = "ok" if r.get("status") == "ok" else "FAILED: " + r.get("error", "")
         net = r.get("net", {}).get("length_per_sqrt_area", "-")
         straight = r.get("straighten", {}).get("net_length_per_sqrt_area_after", "-")
-        print("%-*s  %8s  %8.3f  %11s  %12s  %s"
-              % (width, model.name, r.get("vertices", "-"), seconds, net, straight, result))
+        hausdorff = r.get("remesh", {}).get("hausdorff_per_diagonal")
+        hausdorff = "-" if hausdorff is None else "%.2f" % (100 * hausdorff)
+        print("%-*s  %8s  %8.3f  %11s  %12s  %16s  %s"
+              % (width, model.name, r.get("vertices", "-"), seconds, net, straight, hausdorff, result))
