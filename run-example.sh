@@ -24,4 +24,4 @@ else
         --mesh Data/examples/peanut.off --landmarks Data/examples/peanut.csv)
 fi
 build/bin/consistent-remesh "${args[@]}" --base-domain-from 0 --output "$output"
-echo "run-example: wrote $output/report.json and $output/base_domain.vtp"
+echo "run-example: wrote $output/report.json, base_domain.vtp, the NAME.remesh.vtp remeshes and collection.vtm"
