@@ -27,6 +27,21 @@ BaseDomain octahedronDomain()
   return BaseDomain{ o, { 3, 0, 5, 1, 4, 2 } }; // features not in vertex order
 }
 
+/// Draws a remesh on the base domain's surface.
+TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh)
+{
+  TriangleMesh drawn;
+  for (const BaseLocation& at : mesh.locations)
+  {
+    Vec3 p = Vec3::Zero();
+    for (int k = 0; k < 3; ++k)
+      p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
+    drawn.points.push_back(p);
+  }
+  drawn.triangles = mesh.triangles;
+  return drawn;
+}
+
 } // namespace
 
 TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel)
@@ -41,15 +56,7 @@ TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel
     EXPECT_EQ(mesh.triangles.size(), static_cast<std::size_t>(triangles));
     EXPECT_EQ(mesh.vertexCount(), 2 + triangles / 2); // genus 0
     // Drawn on the octahedron, the remesh is a closed, oriented manifold.
-    TriangleMesh drawn;
-    for (const BaseLocation& at : mesh.locations)
-    {
-      Vec3 p = Vec3::Zero();
-      for (int k = 0; k < 3; ++k)
-        p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
-      drawn.points.push_back(p);
-    }
-    drawn.triangles = mesh.triangles;
+    const TriangleMesh drawn = drawnOnDomain(domain, mesh);
     const SurfaceCheckResult check = checkSurface(drawn);
     EXPECT_TRUE(check.ok()) << "level " << level << ": " << check.message;
     // Vertex f is base vertex of feature f.
@@ -206,26 +213,6 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
               << distance.hausdorff() / diagonal << " of the diagonal\n";
   }
 }
-
-namespace
-{
-
-/// Draws a remesh on the octahedron's surface.
-TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh)
-{
-  TriangleMesh drawn;
-  for (const BaseLocation& at : mesh.locations)
-  {
-    Vec3 p = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-      p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
-    drawn.points.push_back(p);
-  }
-  drawn.triangles = mesh.triangles;
-  return drawn;
-}
-
-} // namespace
 
 TEST(SemiRegularRemesher, AdaptiveWithEverySplitIsTheUniformRemesh)
 {

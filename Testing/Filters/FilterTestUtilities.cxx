@@ -1,5 +1,6 @@
 #include "FilterTestUtilities.h"
 
+#include "vtkCMPBaseDomainBuilder.h"
 #include "vtkCMPLandmarksFromFile.h"
 #include "vtkCMPSurfaceReader.h"
 
@@ -84,6 +85,19 @@ double fieldValue(vtkPolyData* data, const char* name)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
   return array ? array->GetComponent(0, 0) : NAN;
+}
+
+std::string examplesDir()
+{
+  return CMP_EXAMPLES_DIR;
+}
+
+vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)
+{
+  vtkNew<vtkCMPBaseDomainBuilder> builder;
+  builder->SetInputData(surface);
+  EXPECT_TRUE(run(builder).succeeded);
+  return builder->GetOutput();
 }
 
 } // namespace cmp::test

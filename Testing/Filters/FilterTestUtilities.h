@@ -41,4 +41,11 @@ double fieldValue(vtkPolyData* data, const char* name);
 /// \brief Reads a surface with vtkCMPSurfaceReader and adds landmarks from a file.
 vtkSmartPointer<vtkPolyData> readLandmarked(const std::string& mesh, const std::string& landmarks);
 
+/// \brief The shipped example collection folder (Data/examples).
+std::string examplesDir();
+
+/// \brief L0 built by the Base Domain Builder from a landmarked surface
+///        (a test failure if it does not build).
+vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface);
+
 } // namespace cmp::test

@@ -18,18 +18,6 @@
 
 using namespace cmp::test;
 
-namespace
-{
-
-vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)
-{
-  vtkNew<vtkCMPBaseDomainBuilder> builder;
-  builder->SetInputData(surface);
-  EXPECT_TRUE(run(builder).succeeded);
-  return builder->GetOutput();
-}
-
-} // namespace
 
 TEST(FeatureNetTracerFilter, TracesModel387AgainstL0From381AndCarriesArraysThrough)
 {

@@ -28,19 +28,6 @@ using namespace cmp::test;
 namespace
 {
 
-std::string examplesDir()
-{
-  return CMP_EXAMPLES_DIR;
-}
-
-vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)
-{
-  vtkNew<vtkCMPBaseDomainBuilder> builder;
-  builder->SetInputData(surface);
-  EXPECT_TRUE(run(builder).succeeded);
-  return builder->GetOutput();
-}
-
 vtkSmartPointer<vtkPolyData> traced(vtkPolyData* surface, vtkPolyData* l0)
 {
   vtkNew<vtkCMPFeatureNetTracer> tracer;

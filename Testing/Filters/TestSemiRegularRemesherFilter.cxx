@@ -39,19 +39,6 @@ using namespace cmp::test;
 namespace
 {
 
-std::string examplesDir()
-{
-  return CMP_EXAMPLES_DIR;
-}
-
-vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)
-{
-  vtkNew<vtkCMPBaseDomainBuilder> builder;
-  builder->SetInputData(surface);
-  EXPECT_TRUE(run(builder).succeeded);
-  return builder->GetOutput();
-}
-
 /// Traced against `l0` and straightened: the remesher's input.
 vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0)
 {
