@@ -52,6 +52,16 @@ std::uint64_t edgeKey(int a, int b)
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
 }
 
+/// A sample's point: its weights on its (up to three) surface vertices.
+Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample)
+{
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (sample.vertex[k] >= 0)
+      p += sample.weight[k] * mesh.point(sample.vertex[k]);
+  return p;
+}
+
 /// The dyadic midpoint of two located vertices, computed in `patch` (exact,
 /// so zeros stay zeros) and expressed canonically.
 BaseLocation midpointLocation(const BaseDomain& domain, const std::vector<std::vector<int>>& around,
@@ -539,11 +549,7 @@ Status ParameterizedSurface::locate(const BaseLocation& at, SurfaceSample& sampl
 
 Vec3 ParameterizedSurface::position(const SurfaceSample& sample) const
 {
-  Vec3 p = Vec3::Zero();
-  for (int k = 0; k < 3; ++k)
-    if (sample.vertex[k] >= 0)
-      p += sample.weight[k] * net_->mesh.point(sample.vertex[k]);
-  return p;
+  return samplePosition(net_->mesh, sample);
 }
 
 SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& models, double tolerance)
@@ -609,13 +615,7 @@ std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<Surfac
   std::vector<Vec3> positions;
   positions.reserve(samples.size());
   for (const SurfaceSample& s : samples)
-  {
-    Vec3 p = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-      if (s.vertex[k] >= 0)
-        p += s.weight[k] * net.mesh.point(s.vertex[k]);
-    positions.push_back(p);
-  }
+    positions.push_back(samplePosition(net.mesh, s));
   return positions;
 }
 

@@ -446,9 +446,7 @@ public:
       return cmp::Status::error("cannot place the remesh on the input (BaseTriangle and BaseCoordinates do not "
                                 "fit its PatchId): " +
         placed.message());
-    std::vector<cmp::Vec3> positions(samples.size());
-    for (std::size_t v = 0; v < samples.size(); ++v)
-      positions[v] = surface_.position(samples[v]);
+    const std::vector<cmp::Vec3> positions = cmp::samplePositions(net_, samples);
     const double placementSeconds = secondsSince(placementStart);
     progress(0.5);
 
