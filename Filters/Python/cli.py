@@ -160,8 +160,13 @@ def _run_net_filter(model, stage, algorithm, surface, domain, output_folder, sur
     result = model.timed(stage, _run, algorithm)
     write_polydata(result, os.path.join(output_folder, model.name + surface_suffix))
     write_polydata(algorithm.GetOutputDataObject(1), os.path.join(output_folder, model.name + curves_suffix))
-    field = result.GetFieldData()
-    return result, lambda name: field.GetArray(name).GetValue(0)
+    return result, _field_reader(result)
+
+
+def _field_reader(data):
+    """A function giving the first value of a field array of `data`."""
+    field = data.GetFieldData()
+    return lambda name: field.GetArray(name).GetValue(0)
 
 
 def trace_net(model, domain, output_folder):
@@ -240,11 +245,7 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder):
         name = remeshes.GetMetaData(index).Get(vtkCompositeDataSet.NAME()) if remeshes.HasMetaData(index) else None
         if remesh is None or name != model.name:
             raise StageError("the remesher's block %d is not model %s" % (index, model.name))
-        field = remesh.GetFieldData()
-
-        def value(array_name):
-            return field.GetArray(array_name).GetValue(0)
-
+        value = _field_reader(remesh)
         figures.append({
             "level": int(value("RemeshLevel")),
             "vertices": int(value("VertexCount")),
@@ -287,24 +288,22 @@ def describe_base_domain(domain, source):
     return report
 
 
-def write_polydata(polydata, path):
-    writer = vtkXMLPolyDataWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(polydata)
-    writer.SetDataModeToBinary()
-    if not writer.Write():
-        raise StageError("cannot write '%s'" % path)
-
-
-def write_multiblock(data, path):
-    """Writes PATH.vtm and its pieces in a folder PATH without the extension;
-    binary, not appended (see Documentation/known-issues.md)."""
-    writer = vtkXMLMultiBlockDataWriter()
+def _write_xml(writer, data, path):
+    """Binary, not appended mode (see Documentation/known-issues.md)."""
     writer.SetFileName(path)
     writer.SetInputData(data)
     writer.SetDataModeToBinary()
     if not writer.Write():
         raise StageError("cannot write '%s'" % path)
+
+
+def write_polydata(polydata, path):
+    _write_xml(vtkXMLPolyDataWriter(), polydata, path)
+
+
+def write_multiblock(data, path):
+    """Writes PATH.vtm and its pieces in a folder PATH without the extension."""
+    _write_xml(vtkXMLMultiBlockDataWriter(), data, path)
 
 
 def parse_arguments(argv):
