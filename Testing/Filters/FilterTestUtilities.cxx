@@ -100,4 +100,28 @@ vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)
   return builder->GetOutput();
 }
 
+vtkSmartPointer<vtkPolyData> withFeatures0And1Swapped(vtkPolyData* l0)
+{
+  auto swapped = vtkSmartPointer<vtkPolyData>::New();
+  swapped->DeepCopy(l0);
+  vtkDataArray* ids = swapped->GetPointData()->GetArray("FeatureId");
+  for (vtkIdType p = 0; p < ids->GetNumberOfTuples(); ++p)
+  {
+    const double f = ids->GetComponent(p, 0);
+    ids->SetComponent(p, 0, f == 0 ? 1 : f == 1 ? 0 : f);
+  }
+  return swapped;
+}
+
+vtkSmartPointer<vtkPolyData> tetrahedronBaseDomain(const std::string& fileName)
+{
+  vtkNew<vtkCMPSurfaceReader> reader;
+  reader->SetFileName(
+    writeTempFile(fileName, "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n")
+      .c_str());
+  EXPECT_TRUE(run(reader).succeeded);
+  setFeatureIds(reader->GetOutput(), { 0, 1, 2, 3 });
+  return reader->GetOutput();
+}
+
 } // namespace cmp::test

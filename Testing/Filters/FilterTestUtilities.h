@@ -48,4 +48,13 @@ std::string examplesDir();
 ///        (a test failure if it does not build).
 vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface);
 
+/// \brief A copy of `l0` with the landmarks of features 0 and 1 swapped: a
+///        valid base domain that a layout traced against `l0` does not fit.
+vtkSmartPointer<vtkPolyData> withFeatures0And1Swapped(vtkPolyData* l0);
+
+/// \brief A tetrahedron with FeatureIds 0..3: a base domain with fewer
+///        landmarks than a six-landmark layout (written to a temporary file
+///        `fileName` and read back, as a user's L0 would be).
+vtkSmartPointer<vtkPolyData> tetrahedronBaseDomain(const std::string& fileName);
+
 } // namespace cmp::test

@@ -321,24 +321,10 @@ TEST(NetStraightenerFilter, ReportsBadInput)
 
   // L0 with two opposite landmarks swapped: a valid base domain (6 points,
   // 8 triangles) that the traced layout is not equivalent to.
-  vtkNew<vtkPolyData> mirrored;
-  mirrored->DeepCopy(l0);
-  vtkDataArray* l0Ids = mirrored->GetPointData()->GetArray("FeatureId");
-  for (vtkIdType p = 0; p < l0Ids->GetNumberOfTuples(); ++p)
-  {
-    const double f = l0Ids->GetComponent(p, 0);
-    l0Ids->SetComponent(p, 0, f == 0 ? 1 : f == 1 ? 0 : f);
-  }
-  expectError(input, mirrored, "the input's PatchId layout is not equivalent to L0: patch");
+  expectError(input, withFeatures0And1Swapped(l0), "the input's PatchId layout is not equivalent to L0: patch");
 
   // L0 of another collection: 4 instead of 6 landmarks.
-  vtkNew<vtkCMPSurfaceReader> tetraReader;
-  tetraReader->SetFileName(
-    writeTempFile("straightener-tetra.off", "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n")
-      .c_str());
-  ASSERT_TRUE(run(tetraReader).succeeded);
-  setFeatureIds(tetraReader->GetOutput(), { 0, 1, 2, 3 });
-  expectError(input, tetraReader->GetOutput(), "base domain has 4 vertices but the surface has 6 landmarks");
+  expectError(input, tetrahedronBaseDomain("straightener-tetra.off"), "base domain has 4 vertices but the surface has 6 landmarks");
 
   // A PatchId that no longer encloses patches bounded by curves.
   vtkNew<vtkPolyData> relabelled;

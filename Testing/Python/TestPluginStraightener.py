@@ -5,7 +5,6 @@ bad input.
 
 Usage: pvpython TestPluginStraightener.py --plugin PLUGIN.so --data SHARED_DATA
 """
-import argparse
 import sys
 
 sys.dont_write_bytecode = True  # keep the source folder clean
@@ -14,7 +13,7 @@ from paraview import servermanager
 from paraview import simple
 
 from cmp_test_support import (ErrorCapture, check, check_contains, check_equal, landmark_ids, landmarked_shrec,
-                              load_plugin_proxies)
+                              landmarked_shrec_with_x, plugin_test_setup)
 from cmp_test_support import required_field as field
 
 
@@ -57,18 +56,13 @@ def check_block(surface, curves, original_points, what):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--plugin", required=True)
-    parser.add_argument("--data", required=True)
-    args = parser.parse_args()
-    names = load_plugin_proxies(args.plugin)
+    data, names = plugin_test_setup()
 
     def landmarked(model):
-        return landmarked_shrec(names, args.data, model)
+        return landmarked_shrec(names, data, model)
 
     def with_x(model):
-        # A made-up point array, as a user would add one: the x coordinate.
-        return simple.Calculator(Input=landmarked(model), ResultArrayName="X", Function="coordsX")
+        return landmarked_shrec_with_x(names, data, model)
 
     base = names["BaseDomainBuilder"](Input=landmarked("381"))
     models = ["384", "387"]

@@ -3,7 +3,6 @@ it: L0 from model 381, a multiblock of two models traced block by block.
 
 Usage: pvpython TestPluginTracer.py --plugin PLUGIN.so --data SHARED_DATA
 """
-import argparse
 import sys
 
 sys.dont_write_bytecode = True  # keep the source folder clean
@@ -11,7 +10,7 @@ sys.dont_write_bytecode = True  # keep the source folder clean
 from paraview import servermanager
 from paraview import simple
 
-from cmp_test_support import landmarked_shrec, load_plugin_proxies
+from cmp_test_support import landmarked_shrec, plugin_test_setup
 from cmp_test_support import required_field as field
 
 
@@ -21,14 +20,10 @@ def fail(message):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--plugin", required=True)
-    parser.add_argument("--data", required=True)
-    args = parser.parse_args()
-    names = load_plugin_proxies(args.plugin)
+    data, names = plugin_test_setup()
 
     def landmarked(model):
-        return landmarked_shrec(names, args.data, model)
+        return landmarked_shrec(names, data, model)
 
     base = names["BaseDomainBuilder"](Input=landmarked("381"))
     group = simple.GroupDatasets(Input=[landmarked("384"), landmarked("391")])

@@ -223,6 +223,24 @@ def load_plugin_proxies(plugin):
     return names
 
 
+def plugin_test_setup():
+    """The --plugin and --data arguments of a plugin test, with the plugin
+    loaded: returns (shared data folder, proxy namespace)."""
+    import argparse
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--data", required=True)
+    args = parser.parse_args()
+    return args.data, load_plugin_proxies(args.plugin)
+
+
+def landmarked_shrec_with_x(names, data, model):
+    """`landmarked_shrec()` plus a made-up point array, as a user would add
+    one: X, the x coordinate, to check that point data is carried."""
+    from paraview import simple
+    return simple.Calculator(Input=landmarked_shrec(names, data, model), ResultArrayName="X", Function="coordsX")
+
+
 def landmarked_shrec(names, data, model):
     """A SHREC'07 model read and given its landmarks, as a GUI user builds it."""
     folder = os.path.join(data, "shrec07-fourleg")
