@@ -542,8 +542,9 @@ Status ParameterizedSurface::locate(const BaseLocation& at, SurfaceSample& sampl
   double sum = 0.0;
   for (double& x : w)
     sum += (x = std::max(x, 0.0));
-  const Triangle& tri = net_->mesh.triangle(index_->trianglesOf[at.triangle][found]);
-  sample = { { tri[0], tri[1], tri[2] }, { w[0] / sum, w[1] / sum, w[2] / sum } };
+  const int triangle = index_->trianglesOf[at.triangle][found];
+  const Triangle& tri = net_->mesh.triangle(triangle);
+  sample = { { tri[0], tri[1], tri[2] }, { w[0] / sum, w[1] / sum, w[2] / sum }, triangle };
   return {};
 }
 

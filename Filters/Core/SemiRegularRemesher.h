@@ -85,6 +85,7 @@ struct SurfaceSample
 {
   std::array<int, 3> vertex{ { -1, -1, -1 } };        ///< Surface vertices.
   std::array<double, 3> weight{ { 0.0, 0.0, 0.0 } };  ///< Their weights (sum 1).
+  int triangle = -1; ///< Surface triangle holding the sample (-1 at a landmark).
 };
 
 /// \brief One parameterized model, ready to answer where a base-domain

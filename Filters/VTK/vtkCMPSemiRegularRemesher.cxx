@@ -7,6 +7,8 @@
 #include "SemiRegularRemesher.h"
 #include "SurfaceCheck.h"
 #include "SurfaceDistance.h"
+#include "vtkCMPCollection.h"
+#include "vtkCMPParameterizedInput.h"
 #include "vtkCMPPolyDataBridge.h"
 
 #include <Eigen/Geometry>
@@ -69,13 +71,7 @@ int vtkCMPSemiRegularRemesher::FillOutputPortInformation(int port, vtkInformatio
 int vtkCMPSemiRegularRemesher::RequestDataObject(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  const bool multiblock = vtkMultiBlockDataSet::GetData(inputVector[0], 0) != nullptr;
-  vtkInformation* info = outputVector->GetInformationObject(0);
-  vtkDataObject* output = vtkDataObject::GetData(info);
-  if (multiblock && !vtkMultiBlockDataSet::SafeDownCast(output))
-    info->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkMultiBlockDataSet>::New());
-  else if (!multiblock && !vtkPolyData::SafeDownCast(output))
-    info->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+  cmp::bridge::matchOutputType(vtkDataObject::GetData(inputVector[0], 0), outputVector, 0);
   vtkInformation* connectivityInfo = outputVector->GetInformationObject(1);
   if (!vtkPolyData::GetData(connectivityInfo))
     connectivityInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
@@ -85,11 +81,10 @@ int vtkCMPSemiRegularRemesher::RequestDataObject(
 namespace
 {
 
-constexpr const char* kBaseTriangleArray = "BaseTriangle";
-constexpr const char* kBaseCoordinatesArray = "BaseCoordinates";
+using cmp::bridge::kBaseCoordinatesArray;
+using cmp::bridge::kBaseTriangleArray;
 constexpr const char* kLevelArray = "Level";
 constexpr const char* kVertexLevelArray = "VertexLevel";
-constexpr const char* kNormalsArray = "Normals";
 
 using Clock = std::chrono::steady_clock;
 
@@ -172,161 +167,16 @@ struct SharedRemesh
   }
 };
 
-/// The first problem the independent layout check finds, or "".
-std::string layoutProblem(const cmp::LabelledSurface& surface, const cmp::BaseDomain& domain)
-{
-  const std::vector<std::string> problems = cmp::validateLayout(surface, cmp::toBaseTriangles(domain));
-  return problems.empty() ? "" : problems.front();
-}
-
-/// Reads the surface and checks what the remesher relies on: finite
-/// coordinates and a closed genus-0 manifold. Unlike the other filters it
-/// accepts zero-area triangles: the straightener's cuts may leave some, and
-/// a vertex placed in one still lies on the surface (they add no normal to
-/// FlippedTriangles).
-cmp::Status toParameterizedSurface(vtkPolyData* input, cmp::TriangleMesh& mesh)
-{
-  if (cmp::Status s = cmp::bridge::toTriangleMesh(input, mesh); !s.ok())
-    return s;
-  cmp::SurfaceCheckOptions options;
-  options.checkGeometry = false;
-  const cmp::SurfaceCheckResult check = cmp::checkSurface(mesh, options);
-  if (!check.ok())
-    return cmp::Status::error(check.message);
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    if (!mesh.points[v].allFinite())
-      return cmp::Status::error("point " + std::to_string(v) + " has a NaN or infinite coordinate");
-  return {};
-}
-
-/// Reads the straightener's per-point parameterization back, checking it
-/// against the surface and L0 so that the core only sees sound values.
-cmp::Status readParameterization(vtkPolyData* input, int baseTriangleCount, cmp::PatchParameterization& out)
-{
-  vtkPointData* points = input->GetPointData();
-  const vtkIdType pointCount = input->GetNumberOfPoints();
-  vtkDataArray* triangles = points->GetArray(kBaseTriangleArray);
-  vtkDataArray* coordinates = points->GetArray(kBaseCoordinatesArray);
-  for (const auto& [array, name] : { std::pair{ triangles, kBaseTriangleArray }, std::pair{ coordinates,
-                                       kBaseCoordinatesArray } })
-  {
-    if (!array)
-      return cmp::Status::error(std::string("input has no ") + name + " point array: run Net Straightener first");
-    if (array->GetNumberOfTuples() != pointCount)
-      return cmp::Status::error(std::string("point array '") + name + "' has " +
-        std::to_string(array->GetNumberOfTuples()) + " tuples for " + std::to_string(pointCount) + " points");
-  }
-  if (triangles->GetNumberOfComponents() != 1)
-    return cmp::Status::error("point array 'BaseTriangle' must have one component (it has " +
-      std::to_string(triangles->GetNumberOfComponents()) + ")");
-  if (coordinates->GetNumberOfComponents() != 3)
-    return cmp::Status::error("point array 'BaseCoordinates' must have 3 components (it has " +
-      std::to_string(coordinates->GetNumberOfComponents()) + ")");
-  out = cmp::PatchParameterization{};
-  out.baseTriangle.resize(pointCount);
-  out.baseCoordinates.resize(pointCount);
-  for (vtkIdType v = 0; v < pointCount; ++v)
-  {
-    const double t = triangles->GetComponent(v, 0);
-    if (!(t >= 0 && t < baseTriangleCount) || t != std::floor(t))
-    {
-      std::ostringstream problem;
-      problem << "point array 'BaseTriangle' has " << t << " at point " << v << "; it must be an L0 triangle (0.."
-              << baseTriangleCount - 1 << "): was the surface parameterized over this L0?";
-      return cmp::Status::error(problem.str());
-    }
-    out.baseTriangle[v] = static_cast<int>(t);
-    std::array<double, 3>& b = out.baseCoordinates[v];
-    for (int k = 0; k < 3; ++k)
-      b[k] = coordinates->GetComponent(v, k);
-    // Loose bounds: they catch garbage, not the straightener's rounding.
-    if (!std::isfinite(b[0]) || !std::isfinite(b[1]) || !std::isfinite(b[2]) ||
-      std::min({ b[0], b[1], b[2] }) < -1e-6 || std::abs(b[0] + b[1] + b[2] - 1.0) > 1e-6)
-    {
-      std::ostringstream problem;
-      problem << "point array 'BaseCoordinates' at point " << v << " is (" << b[0] << ", " << b[1] << ", " << b[2]
-              << "): not barycentric coordinates (finite, >= 0, sum 1)";
-      return cmp::Status::error(problem.str());
-    }
-  }
-  return {};
-}
-
-bool isFloating(vtkAbstractArray* array)
-{
-  const int type = array->GetDataType();
-  return vtkArrayDownCast<vtkDataArray>(array) && (type == VTK_FLOAT || type == VTK_DOUBLE);
-}
-
 /// Point data of one remesh: every input point array carried to the remesh
 /// vertices, FeatureId written anew, and the shared base-domain arrays.
 void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<cmp::SurfaceSample>& samples,
   const SharedRemesh& shared)
 {
   const auto vertices = static_cast<vtkIdType>(samples.size());
-  for (int i = 0; i < input->GetNumberOfArrays(); ++i)
-  {
-    vtkAbstractArray* source = input->GetAbstractArray(i);
-    const char* name = source->GetName();
-    // Rewritten or replaced below: FeatureId marks exactly the landmarks,
-    // the base arrays are the remesh's own.
-    if (name &&
-      (!std::strcmp(name, cmp::bridge::kFeatureIdArray) || !std::strcmp(name, kBaseTriangleArray) ||
-        !std::strcmp(name, kBaseCoordinatesArray)))
-      continue;
-    auto array = vtk::TakeSmartPointer(source->NewInstance());
-    array->SetName(name);
-    array->SetNumberOfComponents(source->GetNumberOfComponents());
-    array->CopyComponentNames(source);
-    array->SetNumberOfTuples(vertices);
-    const int components = source->GetNumberOfComponents();
-    if (isFloating(source))
-    {
-      auto* from = vtkArrayDownCast<vtkDataArray>(source);
-      auto* to = vtkArrayDownCast<vtkDataArray>(array);
-      for (vtkIdType v = 0; v < vertices; ++v)
-        for (int c = 0; c < components; ++c)
-        {
-          double value = 0.0;
-          for (int k = 0; k < 3; ++k)
-            if (samples[v].vertex[k] >= 0)
-              value += samples[v].weight[k] * from->GetComponent(samples[v].vertex[k], c);
-          to->SetComponent(v, c, value);
-        }
-    }
-    else
-    {
-      // Labels, ids (vtkOriginalPointIds), masks and strings: averaging
-      // them means nothing, so take the value of the input point the remesh
-      // vertex is closest to in weight.
-      for (vtkIdType v = 0; v < vertices; ++v)
-      {
-        const auto& w = samples[v].weight;
-        const int nearest = static_cast<int>(std::max_element(w.begin(), w.end()) - w.begin());
-        array->SetTuple(v, samples[v].vertex[nearest], source);
-      }
-    }
-    const int attribute = input->IsArrayAnAttribute(i);
-    const bool normals = attribute == vtkDataSetAttributes::NORMALS || (name && !std::strcmp(name, kNormalsArray));
-    if (normals && isFloating(source) && components == 3)
-    {
-      auto* to = vtkArrayDownCast<vtkDataArray>(array);
-      for (vtkIdType v = 0; v < vertices; ++v)
-      {
-        double n[3];
-        to->GetTuple(v, n);
-        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (length > 0.0)
-          to->SetTuple3(v, n[0] / length, n[1] / length, n[2] / length);
-      }
-    }
-    const int index = points->AddArray(array);
-    // Global and pedigree ids must be unique: copied ids are not, so they
-    // stay ordinary arrays.
-    if (attribute >= 0 && attribute != vtkDataSetAttributes::GLOBALIDS &&
-      attribute != vtkDataSetAttributes::PEDIGREEIDS)
-      points->SetActiveAttribute(index, attribute);
-  }
+  // Rewritten or replaced below: FeatureId marks exactly the landmarks, the
+  // base arrays are the remesh's own.
+  cmp::bridge::sampleArrays(points, input, samples,
+    { cmp::bridge::kFeatureIdArray, cmp::bridge::kBaseTriangleArray, cmp::bridge::kBaseCoordinatesArray });
 
   // Same array type as the input's, so readers of FeatureId see no change.
   vtkDataArray* inputFeatureIds = input->GetArray(cmp::bridge::kFeatureIdArray);
@@ -397,42 +247,18 @@ class ModelRemesher
 {
 public:
   ModelRemesher(const cmp::BaseDomain& domain, vtkPolyData* input)
-    : domain_(domain)
-    , input_(input)
+    : input_(domain, input)
   {
   }
   ModelRemesher(const ModelRemesher&) = delete;
   ModelRemesher& operator=(const ModelRemesher&) = delete;
 
-  const cmp::ParameterizedSurface& surface() const { return surface_; }
+  const cmp::ParameterizedSurface& surface() const { return input_.surface(); }
 
   cmp::Status prepare()
   {
     const Clock::time_point start = Clock::now();
-    cmp::LandmarkList landmarks;
-    std::vector<int> patchIds;
-    cmp::Status status = toParameterizedSurface(input_, mesh_);
-    if (status.ok())
-      status = cmp::bridge::readLandmarks(input_, landmarks);
-    if (status.ok())
-      status = cmp::checkBaseDomain(domain_, static_cast<int>(landmarks.size()));
-    if (status.ok())
-      status = cmp::bridge::readPatchIds(input_, patchIds);
-    if (status.ok())
-      status = readParameterization(input_, domain_.mesh.triangleCount(), parameterization_);
-    // The core only rebuilds a layout that is one; checking first names the
-    // problem in the user's terms (for example L0 from another collection).
-    if (status.ok())
-      if (const std::string problem = layoutProblem(cmp::toLabelledSurface(mesh_, patchIds, landmarks), domain_);
-          !problem.empty())
-        status = cmp::Status::error("the input's PatchId layout is not equivalent to L0: " + problem);
-    if (status.ok())
-      status = cmp::layoutFromPatchIds(mesh_, patchIds, landmarks, domain_, net_);
-    if (status.ok())
-      if (cmp::Status built = surface_.build(net_, domain_, parameterization_); !built.ok())
-        status = cmp::Status::error("cannot place the remesh on the input (BaseTriangle and BaseCoordinates do not "
-                                    "fit its PatchId): " +
-          built.message());
+    cmp::Status status = input_.prepare();
     rebuildSeconds_ = secondsSince(start);
     return status;
   }
@@ -442,11 +268,11 @@ public:
   {
     const Clock::time_point placementStart = Clock::now();
     std::vector<cmp::SurfaceSample> samples;
-    if (cmp::Status placed = cmp::placeOnSurface(shared.mesh, surface_, samples); !placed.ok())
+    if (cmp::Status placed = cmp::placeOnSurface(shared.mesh, input_.surface(), samples); !placed.ok())
       return cmp::Status::error("cannot place the remesh on the input (BaseTriangle and BaseCoordinates do not "
                                 "fit its PatchId): " +
         placed.message());
-    const std::vector<cmp::Vec3> positions = cmp::samplePositions(net_, samples);
+    const std::vector<cmp::Vec3> positions = cmp::samplePositions(input_.net(), samples);
     const double placementSeconds = secondsSince(placementStart);
     progress(0.5);
 
@@ -458,10 +284,10 @@ public:
     auto remesh = vtkSmartPointer<vtkPolyData>::New();
     remesh->SetPoints(points);
     remesh->SetPolys(shared.polys);
-    fillPointData(remesh->GetPointData(), input_->GetPointData(), samples, shared);
+    fillPointData(remesh->GetPointData(), input_.input()->GetPointData(), samples, shared);
     remesh->GetCellData()->AddArray(shared.patchIds);
     remesh->GetCellData()->AddArray(shared.levels);
-    const RemeshQuality quality = measureQuality(shared.mesh, positions, samples, net_.mesh);
+    const RemeshQuality quality = measureQuality(shared.mesh, positions, samples, input_.net().mesh);
     progress(0.7);
 
     vtkFieldData* field = remesh->GetFieldData();
@@ -479,9 +305,9 @@ public:
       // off, remesh to input catches triangles spanning concave regions.
       const Clock::time_point distanceStart = Clock::now();
       const cmp::SurfaceDistance distance =
-        cmp::surfaceDistance(mesh_, cmp::TriangleMesh{ positions, shared.mesh.triangles });
+        cmp::surfaceDistance(input_.mesh(), cmp::TriangleMesh{ positions, shared.mesh.triangles });
       const double hausdorff = distance.hausdorff();
-      const double diagonal = cmp::boundingBoxDiagonal(mesh_);
+      const double diagonal = cmp::boundingBoxDiagonal(input_.mesh());
       cmp::bridge::setFieldValue(field, "HausdorffDistance", hausdorff);
       cmp::bridge::setFieldValue(field, "HausdorffDistanceRelative", diagonal > 0.0 ? hausdorff / diagonal : 0.0);
       cmp::bridge::setFieldValue(field, "MeanDistance", 0.5 * (distance.meanAToB + distance.meanBToA));
@@ -494,25 +320,9 @@ public:
   }
 
 private:
-  const cmp::BaseDomain& domain_;
-  vtkPolyData* input_ = nullptr;
-  cmp::TriangleMesh mesh_;
-  cmp::TracedNet net_;
-  cmp::PatchParameterization parameterization_;
-  cmp::ParameterizedSurface surface_;
+  cmp::bridge::ParameterizedInput input_;
   double rebuildSeconds_ = 0.0;
 };
-
-/// "block 2 ('387')" for messages about the surface at `index` (counting
-/// the multiblock's surfaces from 0 in traversal order).
-std::string blockName(vtkDataObjectTreeIterator* it, int index)
-{
-  std::string text = "block " + std::to_string(index);
-  vtkInformation* meta = it->HasCurrentMetaData() ? it->GetCurrentMetaData() : nullptr;
-  if (meta && meta->Has(vtkCompositeDataSet::NAME()))
-    text += std::string(" ('") + meta->Get(vtkCompositeDataSet::NAME()) + "')";
-  return text;
-}
 
 } // namespace
 
@@ -547,50 +357,17 @@ int vtkCMPSemiRegularRemesher::RequestData(
   }
 
   // The surfaces to remesh: the input itself, or every leaf of a multiblock.
-  auto* multiblockInput = vtkMultiBlockDataSet::SafeDownCast(input);
-  auto* multiblockOutput = vtkMultiBlockDataSet::SafeDownCast(output);
-  vtkSmartPointer<vtkDataObjectTreeIterator> leaves;
-  std::vector<std::unique_ptr<ModelRemesher>> models;
-  std::vector<std::string> names;
-  if (multiblockInput)
+  cmp::bridge::SurfaceCollection collection;
+  if (cmp::Status listed = cmp::bridge::collectSurfaces(input, collection); !listed.ok())
   {
-    if (!multiblockOutput)
-    {
-      vtkErrorMacro("internal error: the output for a multiblock input is not a multiblock");
-      return 0;
-    }
-    leaves = vtk::TakeSmartPointer(multiblockInput->NewTreeIterator());
-    leaves->SkipEmptyNodesOn();
-    int index = 0;
-    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem(), ++index)
-    {
-      auto* surface = vtkPolyData::SafeDownCast(leaves->GetCurrentDataObject());
-      if (!surface)
-      {
-        vtkErrorMacro(<< blockName(leaves, index) << ": is a " << leaves->GetCurrentDataObject()->GetClassName()
-                      << ", not a vtkPolyData surface");
-        multiblockOutput->Initialize();
-        return 0;
-      }
-      models.push_back(std::make_unique<ModelRemesher>(domain, surface));
-      names.push_back(blockName(leaves, index) + ": ");
-    }
-    if (models.empty())
-    {
-      vtkErrorMacro("the input multiblock holds no surfaces");
-      return 0;
-    }
-  }
-  else if (!vtkPolyData::SafeDownCast(input) || !vtkPolyData::SafeDownCast(output))
-  {
-    vtkErrorMacro("input 0 must be a vtkPolyData or a vtkMultiBlockDataSet of them");
+    vtkErrorMacro(<< listed.message());
+    output->Initialize();
     return 0;
   }
-  else
-  {
-    models.push_back(std::make_unique<ModelRemesher>(domain, vtkPolyData::SafeDownCast(input)));
-    names.emplace_back();
-  }
+  std::vector<std::unique_ptr<ModelRemesher>> models;
+  for (vtkPolyData* surface : collection.surfaces)
+    models.push_back(std::make_unique<ModelRemesher>(domain, surface));
+  const std::vector<std::string>& names = collection.labels;
 
   const auto fail = [&](const std::string& message)
   {
@@ -633,15 +410,7 @@ int vtkCMPSemiRegularRemesher::RequestData(
     if (cmp::Status placed = models[m]->place(shared, this->ComputeDistance, results.back(), progress); !placed.ok())
       return fail(names[m] + placed.message());
   }
-  if (multiblockInput)
-  {
-    multiblockOutput->CopyStructure(multiblockInput); // same tree, names and other block metadata
-    std::size_t m = 0;
-    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
-      multiblockOutput->SetDataSet(leaves, results[m++]);
-  }
-  else
-    output->ShallowCopy(results.front());
+  cmp::bridge::assembleOutput(input, output, results);
   connectivityOutput->ShallowCopy(connectivity);
   this->UpdateProgress(1.0);
   return 1;

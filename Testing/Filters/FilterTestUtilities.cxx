@@ -1,7 +1,9 @@
 #include "FilterTestUtilities.h"
 
 #include "vtkCMPBaseDomainBuilder.h"
+#include "vtkCMPFeatureNetTracer.h"
 #include "vtkCMPLandmarksFromFile.h"
+#include "vtkCMPNetStraightener.h"
 #include "vtkCMPSurfaceReader.h"
 
 #include <vtkAlgorithm.h>
@@ -12,6 +14,7 @@
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkMassProperties.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
@@ -90,6 +93,19 @@ double fieldValue(vtkPolyData* data, const char* name)
 std::string examplesDir()
 {
   return CMP_EXAMPLES_DIR;
+}
+
+vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0)
+{
+  vtkNew<vtkCMPFeatureNetTracer> tracer;
+  tracer->SetInputData(0, surface);
+  tracer->SetInputData(1, l0);
+  vtkNew<vtkCMPNetStraightener> straightener;
+  straightener->SetInputConnection(0, tracer->GetOutputPort(0));
+  straightener->SetInputData(1, l0);
+  const RunResult result = run(straightener);
+  EXPECT_TRUE(result.succeeded) << result.error;
+  return straightener->GetOutput(0);
 }
 
 vtkSmartPointer<vtkPolyData> baseDomainOf(vtkPolyData* surface)

@@ -57,4 +57,9 @@ vtkSmartPointer<vtkPolyData> withFeatures0And1Swapped(vtkPolyData* l0);
 ///        `fileName` and read back, as a user's L0 would be).
 vtkSmartPointer<vtkPolyData> tetrahedronBaseDomain(const std::string& fileName);
 
+/// \brief `surface` traced against `l0` and straightened (a test failure
+///        if either fails): the input of the filters that read a
+///        parameterization.
+vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0);
+
 } // namespace cmp::test

@@ -39,20 +39,6 @@ using namespace cmp::test;
 namespace
 {
 
-/// Traced against `l0` and straightened: the remesher's input.
-vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0)
-{
-  vtkNew<vtkCMPFeatureNetTracer> tracer;
-  tracer->SetInputData(0, surface);
-  tracer->SetInputData(1, l0);
-  vtkNew<vtkCMPNetStraightener> straightener;
-  straightener->SetInputConnection(0, tracer->GetOutputPort(0));
-  straightener->SetInputData(1, l0);
-  const RunResult result = run(straightener);
-  EXPECT_TRUE(result.succeeded) << result.error;
-  return straightener->GetOutput(0);
-}
-
 double diagonalOf(vtkPolyData* surface)
 {
   double bounds[6];
@@ -607,7 +593,7 @@ TEST(SemiRegularRemesherFilter, ReportsBadInput)
   vtkNew<vtkPolyData> wrongPatch;
   wrongPatch->DeepCopy(input);
   wrongPatch->GetPointData()->GetArray("BaseTriangle")->Fill(0);
-  expectError(wrongPatch, l0, "cannot place the remesh on the input");
+  expectError(wrongPatch, l0, "BaseTriangle and BaseCoordinates do not fit the input's PatchId");
 
   // L0 with two landmarks swapped: a valid base domain the layout does not fit.
   expectError(input, withFeatures0And1Swapped(l0), "the input's PatchId layout is not equivalent to L0: patch");
