@@ -119,8 +119,9 @@ def main():
     # White shading of an untextured surface gives a few grey levels; Spot's
     # texture gives many colours.
     check(colours > 50, "only %d distinct colours: is the texture applied?" % colours)
-    print("Spot's texture on 387 (level 4): %d seam points added, worst landmark corner %.2g, "
-          "%.0f%% of the image covered, %d colours; wrote %s" % (added, worst, 100 * covered, colours, args.image))
+    print("Spot's texture on 387 (level 4): %d seam points added, worst landmark corner %.2g, %.3f s, "
+          "%.0f%% of the image covered, %d colours; wrote %s"
+          % (added, worst, field(textured, "TransferSeconds"), 100 * covered, colours, args.image))
 
 
 if __name__ == "__main__":
