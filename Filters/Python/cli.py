@@ -267,11 +267,53 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder):
     for model, model_figures in zip(models, figures):
         model.report["remesh"] = model_figures
         model.report["seconds"]["remesh"] = model_figures["seconds"]
-    return {
+    return remeshes, {
         "vertices": connectivity.GetNumberOfPoints(),
         "triangles": connectivity.GetNumberOfCells(),
         "seconds": round(seconds, 4),
     }
+
+
+def transfer_attributes(source, remeshes, domain, output_folder):
+    """AttributeTransfer from `source`'s parameterized surface (its point
+    arrays and texture coordinates) onto every remesh of the collection,
+    texture seams split so the result renders: writes
+    TARGET.from-SOURCE.vtp per other model and returns the stage's figures.
+    Raises StageError if the filter fails or a file cannot be written."""
+    transfer = cmp.vtkCMPAttributeTransfer()
+    transfer.SetInputData(0, remeshes)
+    transfer.SetInputData(1, source.parameterized)
+    transfer.SetInputData(2, domain)
+    transfer.SplitTextureSeamsOn()
+    start = time.perf_counter()
+    results = _run(transfer)
+    figures = {"source": source.name, "targets": {}}
+    for index in range(results.GetNumberOfBlocks()):
+        name = results.GetMetaData(index).Get(vtkCompositeDataSet.NAME())
+        if name == source.name:
+            continue
+        result = results.GetBlock(index)
+        value = _field_reader(result)
+        write_polydata(result, os.path.join(output_folder, "%s.from-%s.vtp" % (name, source.name)))
+        figures["targets"][name] = {
+            "arrays": int(value("TransferredArrays")),
+            "seam_points_added": int(value("SeamPointsAdded")),
+            "textured": result.GetPointData().GetTCoords() is not None,
+        }
+    figures["seconds"] = round(time.perf_counter() - start, 4)
+    return figures
+
+
+def run_transfer(source_name, ready, remeshes, domain, output_folder):
+    """The --transfer-from stage, reported but never fatal to the models."""
+    source = next((m for m in ready if m.name == source_name), None)
+    if remeshes is None or source is None or source.parameterized is None:
+        return {"source": source_name, "error": "model %s was not remeshed with the collection" % source_name}
+    print("transferring %s's attributes onto the other remeshes" % source_name, flush=True)
+    try:
+        return transfer_attributes(source, remeshes, domain, output_folder)
+    except StageError as error:
+        return {"source": source_name, "error": str(error)}
 
 
 def describe_base_domain(domain, source):
@@ -326,6 +368,9 @@ def parse_arguments(argv):
                         help="refine adaptively, J being the maximum level: split a triangle while on any model the "
                         "surface is farther than T times that model's bounding-box diagonal from it (e.g. 0.002; "
                         "default 0: uniform)")
+    parser.add_argument("--transfer-from", metavar="NAME",
+                        help="carry model NAME's point arrays and texture coordinates onto every other remesh "
+                        "(writes TARGET.from-NAME.vtp)")
     parser.add_argument("--output", required=True, help="output folder")
     args = parser.parse_args(argv)
     if not args.mesh:
@@ -336,6 +381,9 @@ def parse_arguments(argv):
     duplicates = sorted({n for n in names if names.count(n) > 1})
     if duplicates:
         parser.error("two meshes share the name %s; models are named by file name" % ", ".join(duplicates))
+    if args.transfer_from is not None and args.transfer_from not in names:
+        parser.error("--transfer-from %s: no model is named so (models are named by file name: %s)"
+                     % (args.transfer_from, ", ".join(names)))
     if args.base_domain is None and args.base_domain_from is None:
         args.base_domain_from = 0
     if args.base_domain_from is not None and not 0 <= args.base_domain_from < len(args.mesh):
@@ -415,14 +463,17 @@ def main(argv=None):
         print("remeshing %d model%s at level %d%s"
               % (len(ready), "" if len(ready) == 1 else "s", args.level, adaptive), flush=True)
         try:
-            report["remesh"].update(remesh_collection(ready, domain, args.level, args.adaptive_tolerance,
-                                                      args.output))
+            remeshes, figures = remesh_collection(ready, domain, args.level, args.adaptive_tolerance, args.output)
+            report["remesh"].update(figures)
             for model in ready:
                 model.report["status"] = "ok"
         except StageError as error:
+            remeshes = None
             report["remesh"]["error"] = str(error)
             for model in ready:
                 model.fail("remeshing the collection failed: %s" % error)
+        if args.transfer_from is not None:
+            report["transfer"] = run_transfer(args.transfer_from, ready, remeshes, domain, args.output)
 
     for model in models:
         report["models"][model.name] = model.report
@@ -434,7 +485,8 @@ def main(argv=None):
     print_summary(models, report)
     if domain is None:
         return EXIT_NO_BASE_DOMAIN
-    return 1 if failed else 0
+    # A requested stage that failed is a failure too.
+    return 1 if failed or "error" in report.get("transfer", {}) else 0
 
 
 def print_summary(models, report):
@@ -444,6 +496,13 @@ def print_summary(models, report):
     else:
         print("base domain: %d vertices, %d triangles, %d edges (%s)"
               % (domain["vertices"], domain["triangles"], domain["edges"], domain["source"]))
+    transfer = report.get("transfer")
+    if transfer is not None:
+        if "error" in transfer:
+            print("transfer from %s: FAILED: %s" % (transfer["source"], transfer["error"]))
+        else:
+            print("transfer from %s: onto %d remeshes (%.3f s)"
+                  % (transfer["source"], len(transfer["targets"]), transfer["seconds"]))
     remesh = report.get("remesh", {})
     if "error" in remesh:
         print("remesh: FAILED: %s" % remesh["error"])

@@ -304,7 +304,8 @@ def case_collection(tmp):
     pairs = [spot] + shrec_pairs()
     check_equal(len(pairs), 11, "models in the collection")
     out = os.path.join(tmp, "out")
-    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3"], out)
+    status, stdout, stderr, report = run_cli(
+        model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--transfer-from", "spot"], out)
     check_equal(status, 0, "exit status (stderr: %s)" % stderr)
     check(report is not None, "no report.json")
     check_models_ok(report, pairs, "collection")
@@ -338,6 +339,39 @@ def case_collection(tmp):
         check_straightened(out, name, report["models"][name], flips_allowed=name == "385")
     check_contains(stdout, "straightened", "summary header")
     check_remeshed(out, report, stdout, [os.path.splitext(os.path.basename(m))[0] for m, _ in pairs], 3)
+    check_transferred(out, report, stdout, [os.path.splitext(os.path.basename(m))[0] for m, _ in pairs[1:]])
+
+
+def check_transferred(out, report, stdout, targets):
+    """--transfer-from spot: Spot's texture on every other remesh, and each
+    target's landmark f reads Spot's texture coordinates at landmark f."""
+    transfer = report.get("transfer")
+    check(transfer is not None and "error" not in transfer, "transfer stage: %r" % transfer)
+    check_equal(sorted(transfer["targets"]), sorted(targets), "transfer targets")
+    check_contains(stdout, "transfer from spot: onto %d remeshes" % len(targets), "summary")
+    spot = read_vtp(os.path.join(out, "spot.param.vtp"))
+    spot_corners = spot.GetCellData().GetArray("CornerTCoords")
+    spot_feature = spot.GetPointData().GetArray("FeatureId")
+    spot_values = {}
+    spot_triangles = cells_of(spot)[1].reshape(-1, 3)
+    for t in range(spot.GetNumberOfCells()):
+        for k, p in enumerate(spot_triangles[t]):
+            f = int(spot_feature.GetValue(p))
+            if f >= 0:
+                spot_values.setdefault(f, []).append(spot_corners.GetTuple6(t)[2 * k:2 * k + 2])
+    for name in targets:
+        figures = transfer["targets"][name]
+        check(figures["textured"] and figures["arrays"] >= 1, name + ": transfer figures %r" % figures)
+        result = read_vtp(os.path.join(out, "%s.from-spot.vtp" % name))
+        tcoords = result.GetPointData().GetTCoords()
+        check(tcoords is not None, name + ": no texture coordinates")
+        feature = result.GetPointData().GetArray("FeatureId")
+        for p in range(result.GetNumberOfPoints()):
+            f = int(feature.GetValue(p))
+            if f >= 0:
+                uv = tcoords.GetTuple2(p)
+                worst = min(abs(uv[0] - s[0]) + abs(uv[1] - s[1]) for s in spot_values[f])
+                check(worst < 1e-4, "%s: landmark %d reads (%g, %g), not one of Spot's" % (name, f, uv[0], uv[1]))
 
 
 def case_given_base_domain(tmp):
@@ -492,6 +526,7 @@ def case_argument_errors(tmp):
         (["--mesh", a, "--landmarks", la, "--adaptive-tolerance", "-0.5"],
          "--adaptive-tolerance -0.5: give 0 (uniform) or a positive fraction"),
         (["--mesh", a, "--landmarks", la, "--adaptive-tolerance", "nan"], "--adaptive-tolerance nan: give 0"),
+        (["--mesh", a, "--landmarks", la, "--transfer-from", "b"], "--transfer-from b: no model is named so"),
     ]
     for arguments, message in cases:
         out = os.path.join(tmp, "out")
