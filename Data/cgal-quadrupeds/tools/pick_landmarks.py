@@ -176,8 +176,8 @@ MODELS["bull"] = {
 # is towards the head (+y), up is its back (-z). Its legs point forward like
 # a quadruped's legs point down; its arms stick out sideways, so the outer
 # and inner tops of an arm are on its back and chest sides. It has no
-# snout, eyes or tail: those features are placed on the smooth face and at
-# the small bump at the bottom of the back.
+# snout, eyes or tail: those features are placed on the smooth face, and
+# the tail base at the geodesic tip at the bottom of the back.
 MODELS["bear"] = {
     "frame": ("y", "-z"),
     "note": "Frame: forward (head) +y, up (back) -z. A sitting teddy: arms are the front legs.",
