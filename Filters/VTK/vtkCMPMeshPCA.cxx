@@ -12,6 +12,7 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -25,6 +26,20 @@
 #include <string>
 
 vtkStandardNewMacro(vtkCMPMeshPCA);
+
+void vtkCMPMeshPCA::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Controller != controller)
+  {
+    this->Controller = controller;
+    this->Modified();
+  }
+}
+
+vtkMultiProcessController* vtkCMPMeshPCA::GetController()
+{
+  return this->Controller;
+}
 
 namespace
 {
@@ -42,6 +57,7 @@ enum OutputPort
 
 vtkCMPMeshPCA::vtkCMPMeshPCA()
 {
+  this->Controller = vtkMultiProcessController::GetGlobalController();
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(5);
 }
@@ -169,7 +185,7 @@ int vtkCMPMeshPCA::RequestData(vtkInformation*, vtkInformationVector** inputVect
 {
   const auto start = std::chrono::steady_clock::now();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
-  cmp::bridge::ControllerCommunicator communicator;
+  cmp::bridge::ControllerCommunicator communicator(this->Controller);
   cmp::bridge::ConsistentCollection collection;
   if (cmp::Status s = cmp::bridge::readConsistentCollection(input, communicator, collection); !s.ok())
   {

@@ -6,6 +6,9 @@
 #include "CMPFiltersModule.h"
 
 #include <vtkDataObjectAlgorithm.h>
+#include <vtkSmartPointer.h>
+
+class vtkMultiProcessController;
 
 /// \brief The mean shape and principal modes of variation of a collection
 ///        of remeshes with one connectivity (Semi-Regular Remesher output).
@@ -85,6 +88,13 @@ public:
   /// \brief Factor on every mode.
   vtkGetMacro(SynthesisAllModesFactor, double);
 
+  /// \brief The processes that together hold the collection (default: the
+  ///        global controller, i.e. every rank of `mpirun ... pvbatch`; a
+  ///        vtkDummyController makes this process work alone).
+  void SetController(vtkMultiProcessController* controller);
+  /// \brief The processes that together hold the collection.
+  vtkMultiProcessController* GetController();
+
 protected:
   vtkCMPMeshPCA();
   ~vtkCMPMeshPCA() override = default;
@@ -94,6 +104,7 @@ protected:
 
 private:
   vtkCMPMeshPCA(const vtkCMPMeshPCA&) = delete;
+  vtkSmartPointer<vtkMultiProcessController> Controller;
   void operator=(const vtkCMPMeshPCA&) = delete;
 
   int Alignment = RIGID_EQUAL_VOLUME;

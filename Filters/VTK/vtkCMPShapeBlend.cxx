@@ -10,14 +10,30 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 vtkStandardNewMacro(vtkCMPShapeBlend);
 
+void vtkCMPShapeBlend::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Controller != controller)
+  {
+    this->Controller = controller;
+    this->Modified();
+  }
+}
+
+vtkMultiProcessController* vtkCMPShapeBlend::GetController()
+{
+  return this->Controller;
+}
+
 vtkCMPShapeBlend::vtkCMPShapeBlend()
 {
+  this->Controller = vtkMultiProcessController::GetGlobalController();
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
 }
@@ -64,7 +80,7 @@ int vtkCMPShapeBlend::RequestData(vtkInformation*, vtkInformationVector** inputV
 {
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  cmp::bridge::ControllerCommunicator communicator;
+  cmp::bridge::ControllerCommunicator communicator(this->Controller);
   cmp::bridge::ConsistentCollection collection;
   if (cmp::Status s = cmp::bridge::readConsistentCollection(input, communicator, collection); !s.ok())
   {

@@ -6,6 +6,9 @@
 #include "CMPFiltersModule.h"
 
 #include <vtkDataObjectAlgorithm.h>
+#include <vtkSmartPointer.h>
+
+class vtkMultiProcessController;
 
 #include <vector>
 
@@ -48,6 +51,13 @@ public:
   /// \brief Alignment before blending.
   vtkGetMacro(Alignment, int);
 
+  /// \brief The processes that together hold the collection (default: the
+  ///        global controller, i.e. every rank of `mpirun ... pvbatch`; a
+  ///        vtkDummyController makes this process work alone).
+  void SetController(vtkMultiProcessController* controller);
+  /// \brief The processes that together hold the collection.
+  vtkMultiProcessController* GetController();
+
 protected:
   vtkCMPShapeBlend();
   ~vtkCMPShapeBlend() override = default;
@@ -57,6 +67,7 @@ protected:
 
 private:
   vtkCMPShapeBlend(const vtkCMPShapeBlend&) = delete;
+  vtkSmartPointer<vtkMultiProcessController> Controller;
   void operator=(const vtkCMPShapeBlend&) = delete;
 
   std::vector<double> Weights;
