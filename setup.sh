@@ -12,7 +12,7 @@ packages=(
   paraview-dev python3-paraview python3-mpi4py python3-numpy
   libeigen3-dev libgtest-dev xvfb
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libqt5opengl5-dev
-  libopenmpi-dev libutfcpp-dev libboost-dev libexpat1-dev libfreetype-dev libgdal-dev
+  libopenmpi-dev openmpi-bin libutfcpp-dev libboost-dev libexpat1-dev libfreetype-dev libgdal-dev
   libgl2ps-dev libglew-dev libhdf5-mpi-dev libjpeg-dev liblz4-dev liblzma-dev libxml2-dev
   libnetcdf-dev libpng-dev libpython3-dev libtheora-dev libtiff-dev libx11-dev libgl-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libdouble-conversion-dev
