@@ -76,9 +76,12 @@ Eigen::MatrixXd gramMatrix(const Eigen::MatrixXd& localData, const CollectionLay
 {
   const Eigen::Index first = layout.firstModel, localCount = localData.cols();
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(layout.modelCount, layout.modelCount);
-  Eigen::MatrixXd localBlock = Eigen::MatrixXd::Zero(localCount, localCount);
-  localBlock.selfadjointView<Eigen::Lower>().rankUpdate(localData.transpose());
-  gram.block(first, first, localCount, localCount) = localBlock.selfadjointView<Eigen::Lower>();
+  if (localCount > 0) // Eigen's product kernels read through the data pointer even when it is empty
+  {
+    Eigen::MatrixXd localBlock = Eigen::MatrixXd::Zero(localCount, localCount);
+    localBlock.selfadjointView<Eigen::Lower>().rankUpdate(localData.transpose());
+    gram.block(first, first, localCount, localCount) = localBlock.selfadjointView<Eigen::Lower>();
+  }
 
   if (communicator.size() > 1)
   {

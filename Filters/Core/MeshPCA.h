@@ -49,11 +49,13 @@ struct MeshPCA
 ///        `requestedModes` and receives the same result.
 ///
 /// Keeps K = min(requestedModes, m - 1) modes (all of them when
-/// `requestedModes` is negative), fewer when the collection varies in
-/// fewer directions: a mode whose singular value is below 1e-6 of the
-/// largest, or below 1e-12 of the mean's centroid size times sqrt(m), is
-/// numerical noise (a collection of m models centred on their mean has at
-/// most m - 1 modes) and is dropped. So identical models give no mode.
+/// `requestedModes` is negative; m models centred on their mean span at
+/// most m - 1 directions), fewer when the collection varies in fewer
+/// directions. A mode is dropped as numerical noise when its singular
+/// value is below 1e-6 of the largest (the Gram matrix squares singular
+/// values, so smaller ones drown in its round-off) or below 1e-12 sqrt(m)
+/// times the mean's centroid size (models that differ only by round-off).
+/// So identical models give no mode.
 ///
 /// Each mode's sign is chosen so that the model with the largest absolute
 /// coefficient on it (the first such model on a tie) has a positive one:

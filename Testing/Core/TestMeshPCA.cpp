@@ -5,6 +5,8 @@
 #include "TestShapes.h"
 #include "ThreadCommunicator.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <gtest/gtest.h>
 
@@ -329,4 +331,147 @@ TEST(MeshPCA, BadInputIsReportedByName)
         std::to_string(base.points.size()) + "; every model must have the same connectivity")
       << "rank " << communicator.rank();
   });
+}
+
+namespace
+{
+
+/// Three smooth deformations of a four-legged animal standing along x with
+/// y up: longer legs, a raised head and a fatter body, each moving the
+/// surface by up to about a tenth of its size.
+std::vector<std::vector<Vec3>> animalDeformations(const std::vector<Vec3>& points)
+{
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : points)
+    box.extend(p);
+  const Vec3 centre = box.center(), extent = box.sizes();
+  std::vector<std::vector<Vec3>> fields(3);
+  for (const Vec3& p : points)
+  {
+    const Vec3 q = (p - centre).cwiseQuotient(extent); // about -0.5 .. 0.5
+    const double below = 1.0 / (1.0 + std::exp(20.0 * q.y()));
+    fields[0].push_back(Vec3(0.0, 0.2 * extent.y() * q.y() * below, 0.0));
+    const double front = std::max(0.0, q.x());
+    fields[1].push_back(Vec3(0.0, 0.4 * extent.y() * front * front, 0.0));
+    const double body = std::exp(-8.0 * q.x() * q.x());
+    fields[2].push_back(0.2 * body * Vec3(0.0, extent.y() * q.y(), extent.z() * q.z()));
+  }
+  return fields;
+}
+
+/// An orthonormal basis of the infinitesimal rigid motions of `shape`:
+/// three translations and three rotations about its centroid.
+Eigen::MatrixXd rigidDirections(const std::vector<Vec3>& shape)
+{
+  const Vec3 c = centroid(shape);
+  Eigen::MatrixXd directions = Eigen::MatrixXd::Zero(3 * static_cast<Eigen::Index>(shape.size()), 6);
+  for (std::size_t v = 0; v < shape.size(); ++v)
+  {
+    const Vec3 r = shape[v] - c;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      directions(3 * v + axis, axis) = 1.0;
+      directions.col(3 + axis).segment<3>(3 * v) = Vec3::Unit(axis).cross(r);
+    }
+  }
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(directions);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(directions.rows(), 6);
+}
+
+} // namespace
+
+TEST(MeshPCA, RecoversTheDeformationsOfARealAnimalThroughAlignment)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  MeshFileData file;
+  ASSERT_TRUE(readOFF(sharedDataDir() + "/shrec07-fourleg/381.off", file).ok());
+  const TriangleMesh& animal = file.mesh;
+  const double diagonal = boundingBoxDiagonal(animal);
+  const std::vector<std::vector<Vec3>> fields = animalDeformations(animal.points);
+  const ShapeList models = deformedCopies(animal.points, fields, 12, 11);
+
+  // As they are made, the models vary in exactly three directions, the
+  // span of the deformations.
+  MeshPCA raw;
+  ASSERT_TRUE(computeMeshPCA(models, -1, raw).ok());
+  ASSERT_EQ(raw.modeCount(), 3);
+  EXPECT_NEAR(raw.explainedVarianceRatios.sum(), 1.0, 1e-12);
+  for (const std::vector<Vec3>& field : fields)
+  {
+    const Eigen::VectorXd f = asVector(field);
+    EXPECT_LT((f - raw.modes * (raw.modes.transpose() * f)).norm(), 1e-10 * f.norm());
+  }
+
+  // Thrown about by rigid motions, then aligned: the alignment ends in the
+  // frame of model 0, where it gives what aligning the unmoved models
+  // gave, moved by model 0's motion.
+  std::mt19937 random(12);
+  std::vector<SimilarityTransform> motions;
+  ShapeList movedModels;
+  for (const std::vector<Vec3>& model : models)
+  {
+    motions.push_back(randomSimilarity(random, diagonal, 1.0, 1.0));
+    movedModels.push_back(moved(model, motions.back()));
+  }
+  AlignmentOptions rigid;
+  rigid.scaling = AlignmentScaling::None;
+  ShapeAlignment alignment, movedAlignment;
+  ASSERT_TRUE(alignShapes(models, animal.triangles, rigid, alignment).ok());
+  ASSERT_TRUE(alignShapes(movedModels, animal.triangles, rigid, movedAlignment).ok());
+  EXPECT_TRUE(movedAlignment.converged);
+  for (std::size_t i = 0; i < models.size(); ++i)
+  {
+    EXPECT_LT(
+      maxDistance(movedAlignment.alignedModels[i], moved(alignment.alignedModels[i], motions[0])), 1e-9 * diagonal);
+  }
+
+  // Aligned, the collection varies again essentially in three directions,
+  // those of the deformations less their rigid part (up to second-order
+  // terms, as the alignment of a deformed model is not exactly linear in
+  // the deformation). Unaligned, the motions spread the variance.
+  MeshPCA aligned, unaligned;
+  ASSERT_TRUE(computeMeshPCA(alignment.alignedModels, -1, aligned).ok());
+  ASSERT_TRUE(computeMeshPCA(movedModels, -1, unaligned).ok());
+  EXPECT_LT(1.0 - aligned.explainedVarianceRatios.head(3).sum(), 1e-3);
+  EXPECT_GT(1.0 - unaligned.explainedVarianceRatios.head(3).sum(), 1e-2);
+  const Eigen::MatrixXd rigidMotions = rigidDirections(aligned.mean);
+  const Eigen::MatrixXd deformationModes = aligned.modes.leftCols(3);
+  for (const std::vector<Vec3>& field : fields)
+  {
+    Eigen::VectorXd f = asVector(field);
+    f -= rigidMotions * (rigidMotions.transpose() * f);
+    EXPECT_LT((f - deformationModes * (deformationModes.transpose() * f)).norm(), 0.05 * f.norm());
+  }
+
+  // Rescaled too, and aligned to equal volume: every model encloses the
+  // mean of the input volumes, so the result is the unmoved one moved by
+  // model 0's rigid motion and scaled by the cube root of the ratio of
+  // the mean volumes.
+  ShapeList scaledModels;
+  double volume = 0.0, scaledVolume = 0.0;
+  for (std::size_t i = 0; i < models.size(); ++i)
+  {
+    std::uniform_real_distribution<double> scale(0.5, 2.0);
+    SimilarityTransform motion = motions[i];
+    motion.scale = scale(random);
+    scaledModels.push_back(moved(models[i], motion));
+    volume += enclosedVolume(models[i], animal.triangles);
+    scaledVolume += enclosedVolume(scaledModels.back(), animal.triangles);
+  }
+  AlignmentOptions equalVolume;
+  equalVolume.scaling = AlignmentScaling::EqualVolume;
+  ShapeAlignment volumeAlignment, scaledAlignment;
+  ASSERT_TRUE(alignShapes(models, animal.triangles, equalVolume, volumeAlignment).ok());
+  ASSERT_TRUE(alignShapes(scaledModels, animal.triangles, equalVolume, scaledAlignment).ok());
+  SimilarityTransform firstMotion = motions[0];
+  firstMotion.scale = std::cbrt(scaledVolume / volume);
+  firstMotion.translation =
+    centroid(scaledModels[0]) - firstMotion.scale * (firstMotion.rotation * centroid(models[0]));
+  for (std::size_t i = 0; i < models.size(); ++i)
+  {
+    EXPECT_NEAR(enclosedVolume(scaledAlignment.alignedModels[i], animal.triangles), scaledVolume / 12.0,
+      1e-12 * scaledVolume);
+    EXPECT_LT(maxDistance(scaledAlignment.alignedModels[i], moved(volumeAlignment.alignedModels[i], firstMotion)),
+      1e-9 * diagonal);
+  }
 }

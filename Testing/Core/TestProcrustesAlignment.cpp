@@ -44,14 +44,6 @@ ShapeList randomlyMoved(const ShapeList& models, unsigned seed, bool scaled)
   return result;
 }
 
-Vec3 centroid(const std::vector<Vec3>& points)
-{
-  Vec3 sum = Vec3::Zero();
-  for (const Vec3& p : points)
-    sum += p;
-  return sum / static_cast<double>(points.size());
-}
-
 double sumOfSquaredDistances(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
 {
   double sum = 0.0;
@@ -328,7 +320,8 @@ TEST(ProcrustesAlignment, BadInputIsReportedByName)
   std::vector<Vec3> point(base.points.size(), Vec3(1, 2, 3));
   status = alignShapes({ base.points, point }, base.triangles, withScaling(AlignmentScaling::UnitCentroidSize),
     alignment);
-  EXPECT_EQ(status.message(), "model 1 has all its vertices at one point, so it cannot be scaled to unit centroid size");
+  EXPECT_EQ(status.message(),
+    "model 1 has all its vertices at one point, so it cannot be scaled to unit centroid size");
 
   AlignmentOptions badOptions;
   badOptions.tolerance = 0.0;

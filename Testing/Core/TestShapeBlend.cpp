@@ -123,7 +123,8 @@ TEST(ShapeBlend, BadWeightsAreReported)
 {
   const ShapeList models = blendCollection();
   ShapeBlend blend;
-  EXPECT_EQ(blendShapes(models, { 0.5, 0.5 }, blend).message(), "blending needs one weight per model: got 2 weights for 5 models");
+  EXPECT_EQ(blendShapes(models, { 0.5, 0.5 }, blend).message(),
+    "blending needs one weight per model: got 2 weights for 5 models");
   EXPECT_EQ(blendShapes(models, { 0.5, 0.2, 0.1, 0.1, 0.0 }, blend).message(),
     "blending weights must sum to 1 (an affine combination), but they sum to 0.9");
   EXPECT_EQ(blendShapes(models, { 0.5, 0.5, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0 }, blend).message(),

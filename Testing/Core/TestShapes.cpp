@@ -98,6 +98,14 @@ ShapeList partForRank(const ShapeList& models, const std::vector<int>& modelsPer
   return ShapeList(models.begin() + first, models.begin() + first + modelsPerRank[rank]);
 }
 
+Vec3 centroid(const std::vector<Vec3>& points)
+{
+  Vec3 sum = Vec3::Zero();
+  for (const Vec3& p : points)
+    sum += p;
+  return sum / static_cast<double>(points.size());
+}
+
 double maxDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
 {
   if (a.size() != b.size())

@@ -40,6 +40,9 @@ std::vector<Vec3> moved(const std::vector<Vec3>& points, const SimilarityTransfo
 ///        `modelsPerRank[r]` to rank r in order.
 ShapeList partForRank(const ShapeList& models, const std::vector<int>& modelsPerRank, int rank);
 
+/// \brief The mean of `points`.
+Vec3 centroid(const std::vector<Vec3>& points);
+
 /// \brief Largest distance between corresponding vertices (infinite when
 ///        the vertex counts differ).
 double maxDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
