@@ -326,8 +326,16 @@ TEST(SurfaceDistance, HundredThousandQueriesOnALargeSphere)
   std::cout << "131072 triangles: tree built in " << buildSeconds << " s, 100000 queries in " << querySeconds
             << " s\n";
   EXPECT_TRUE(std::isfinite(total));
-  // A brute-force scan would take minutes; only a tree gets under this.
-  EXPECT_LT(buildSeconds + querySeconds, 20.0);
+  // A brute-force scan (1.3e10 point-triangle tests) takes minutes in a
+  // release build and hours under AddressSanitizer, which slows the tree
+  // down some 15 times (25 s seen on a loaded machine): only a tree gets
+  // under these bounds.
+#if defined(__SANITIZE_ADDRESS__)
+  const double bound = 150.0;
+#else
+  const double bound = 20.0;
+#endif
+  EXPECT_LT(buildSeconds + querySeconds, bound);
   // Spot-check the large tree against the brute force.
   const std::vector<Vec3> few(queries.begin(), queries.begin() + 20);
   EXPECT_EQ(countMismatches(mesh, few), 0);
