@@ -220,8 +220,8 @@ std::vector<std::string> arraysKeptFromTarget(vtkPointData* source)
   return kept;
 }
 
-/// One target with the source's attributes; `seamPoints` receives the
-/// number of points added on texture seams.
+/// One target with the source's attributes, and the field arrays saying
+/// what was carried and how many points texture seams added.
 cmp::Status transferTo(vtkPolyData* target, const cmp::BaseDomain& domain, const cmp::bridge::ParameterizedInput& source,
   bool splitSeams, vtkPolyData* result)
 {

@@ -1,11 +1,8 @@
 #include "vtkCMPSemiRegularRemesher.h"
 
-#include "BaseDomainBuilder.h"
-#include "LayoutValidator.h"
+#include "BaseDomainBuilder.h" // triangleShapeQuality
 #include "PatchLayout.h"
-#include "PatchParameterization.h"
 #include "SemiRegularRemesher.h"
-#include "SurfaceCheck.h"
 #include "SurfaceDistance.h"
 #include "vtkCMPCollection.h"
 #include "vtkCMPParameterizedInput.h"
@@ -15,9 +12,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
-#include <vtkDataObjectTreeIterator.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
@@ -34,10 +29,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 

@@ -15,6 +15,7 @@ sys.dont_write_bytecode = True  # keep the source folder clean
 
 import numpy
 from consistent_mesh import CMPFilters as cmp
+from vtkmodules.vtkCommonCore import vtkIntArray
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLMultiBlockDataWriter
@@ -128,8 +129,6 @@ def main():
     reader.UpdatePiece(rank, ranks, 0)
     share = reader.GetOutput()
     held = sum(1 for b in range(share.GetNumberOfBlocks()) if share.GetBlock(b) is not None)
-    counts = [0] * ranks
-    from vtkmodules.vtkCommonCore import vtkIntArray
     mine, all_counts = vtkIntArray(), vtkIntArray()
     mine.InsertNextValue(held)
     controller.AllGather(mine, all_counts)
