@@ -89,6 +89,31 @@ BaseDomain octahedronDomain()
   return BaseDomain{ octahedron(), { 3, 0, 5, 1, 4, 2 } };
 }
 
+BaseDomain tetrahedronDomain()
+{
+  return BaseDomain{ tetrahedron(), { 0, 1, 2, 3 } };
+}
+
+BaseDomain mixedValenceDomain()
+{
+  TriangleMesh mesh = octahedron();
+  const Triangle split = mesh.triangles[0];
+  const int centre = mesh.vertexCount();
+  mesh.points.push_back((mesh.points[split[0]] + mesh.points[split[1]] + mesh.points[split[2]]).normalized());
+  mesh.triangles[0] = { split[0], split[1], centre };
+  mesh.triangles.push_back({ split[1], split[2], centre });
+  mesh.triangles.push_back({ split[2], split[0], centre });
+  return BaseDomain{ mesh, { 6, 0, 5, 1, 4, 2, 3 } };
+}
+
+Eigen::MatrixXd toMatrix(const std::vector<Vec3>& points)
+{
+  Eigen::MatrixXd matrix(points.size(), 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    matrix.row(i) = points[i].transpose();
+  return matrix;
+}
+
 TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh)
 {
   TriangleMesh drawn;

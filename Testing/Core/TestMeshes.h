@@ -40,6 +40,16 @@ TriangleMesh bumpySphere(int levels);
 /// \brief The octahedron as a base domain, features not in vertex order.
 BaseDomain octahedronDomain();
 
+/// \brief The tetrahedron as a base domain: every base vertex of valence 3.
+BaseDomain tetrahedronDomain();
+
+/// \brief The octahedron with one face split at its centre: base vertices
+///        of valence 3, 4 and 5.
+BaseDomain mixedValenceDomain();
+
+/// \brief Points as the rows of a matrix.
+Eigen::MatrixXd toMatrix(const std::vector<Vec3>& points);
+
 /// \brief A remesh drawn on the flat triangles of its base domain.
 TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh);
 
