@@ -1,5 +1,7 @@
 #include "TestMeshes.h"
 
+#include "NetStraightener.h"
+#include "NetTracer.h"
 #include "Subdivision.h"
 
 #include <gtest/gtest.h>
@@ -82,6 +84,50 @@ TriangleMesh bumpySphere(int levels)
   return mesh;
 }
 
+BaseDomain octahedronDomain()
+{
+  return BaseDomain{ octahedron(), { 3, 0, 5, 1, 4, 2 } };
+}
+
+BaseDomain tetrahedronDomain()
+{
+  return BaseDomain{ tetrahedron(), { 0, 1, 2, 3 } };
+}
+
+BaseDomain mixedValenceDomain()
+{
+  TriangleMesh mesh = octahedron();
+  const Triangle split = mesh.triangles[0];
+  const int centre = mesh.vertexCount();
+  mesh.points.push_back((mesh.points[split[0]] + mesh.points[split[1]] + mesh.points[split[2]]).normalized());
+  mesh.triangles[0] = { split[0], split[1], centre };
+  mesh.triangles.push_back({ split[1], split[2], centre });
+  mesh.triangles.push_back({ split[2], split[0], centre });
+  return BaseDomain{ mesh, { 6, 0, 5, 1, 4, 2, 3 } };
+}
+
+Eigen::MatrixXd toMatrix(const std::vector<Vec3>& points)
+{
+  Eigen::MatrixXd matrix(points.size(), 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    matrix.row(i) = points[i].transpose();
+  return matrix;
+}
+
+TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh)
+{
+  TriangleMesh drawn;
+  for (const BaseLocation& at : mesh.locations)
+  {
+    Vec3 p = Vec3::Zero();
+    for (int k = 0; k < 3; ++k)
+      p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
+    drawn.points.push_back(p);
+  }
+  drawn.triangles = mesh.triangles;
+  return drawn;
+}
+
 int nearestVertex(const TriangleMesh& mesh, const Vec3& direction)
 {
   int best = 0;
@@ -134,6 +180,20 @@ LandmarkedModel landmarkedRealModel(const std::string& name)
   if (const Status status = loadRealModel(name, model); !status.ok())
     ADD_FAILURE() << name << ": " << status.message();
   return model;
+}
+
+Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out)
+{
+  TracedNet traced;
+  if (Status s = traceFeatureNet(model.data.mesh, model.landmarks, domain, traced); !s.ok())
+    return Status::error(model.name + ": tracing: " + s.message());
+  StraightenedNet straight;
+  if (Status s = straightenNet(traced, domain, straight); !s.ok())
+    return Status::error(model.name + ": straightening: " + s.message());
+  out.net = std::move(straight.net);
+  if (Status s = parameterizePatches(out.net, domain, out.parameterization); !s.ok())
+    return Status::error(model.name + ": parameterizing: " + s.message());
+  return {};
 }
 
 std::vector<std::string> landmarkedFourLeggedModels()

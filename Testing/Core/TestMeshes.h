@@ -3,8 +3,13 @@
 /// \brief Small meshes the core tests build in code, and access to the
 ///        shared real data.
 
+#include "BaseDomain.h"
 #include "Landmarks.h"
 #include "MeshFile.h"
+#include "PatchLayout.h"
+#include "PatchParameterization.h"
+#include "SemiRegularRemesher.h"
+#include "Status.h"
 #include "TestData.h"
 #include "TriangleMesh.h"
 
@@ -32,6 +37,22 @@ TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b);
 /// \brief A sphere of `levels` subdivisions with bumps of 20% of its radius.
 TriangleMesh bumpySphere(int levels);
 
+/// \brief The octahedron as a base domain, features not in vertex order.
+BaseDomain octahedronDomain();
+
+/// \brief The tetrahedron as a base domain: every base vertex of valence 3.
+BaseDomain tetrahedronDomain();
+
+/// \brief The octahedron with one face split at its centre: base vertices
+///        of valence 3, 4 and 5.
+BaseDomain mixedValenceDomain();
+
+/// \brief Points as the rows of a matrix.
+Eigen::MatrixXd toMatrix(const std::vector<Vec3>& points);
+
+/// \brief A remesh drawn on the flat triangles of its base domain.
+TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh);
+
 /// \brief The vertex whose direction from the origin is closest to `direction`.
 int nearestVertex(const TriangleMesh& mesh, const Vec3& direction);
 
@@ -50,6 +71,17 @@ std::vector<LandmarkedModel> landmarkedRealModels();
 
 /// \brief The landmarked real model called `name`; a test failure if absent.
 LandmarkedModel landmarkedRealModel(const std::string& name);
+
+/// \brief A model's feature net straightened on a base domain, with its
+///        per-patch parameterization: what remeshing needs.
+struct ParameterizedModel
+{
+  TracedNet net;                          ///< The straightened net.
+  PatchParameterization parameterization; ///< Its per-patch map.
+};
+
+/// \brief Traces, straightens and parameterizes `model` on `domain`.
+Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out);
 
 /// \brief Paths without extension of every SHREC'07 four-legged model that
 ///        has both `.off` and `.vts` (".../381", ...), sorted.

@@ -1,8 +1,5 @@
 #include "BaseDomainBuilder.h"
 #include "MeshFile.h"
-#include "NetStraightener.h"
-#include "NetTracer.h"
-#include "PatchParameterization.h"
 #include "SemiRegularRemesher.h"
 #include "SurfaceCheck.h"
 #include "SurfaceDistance.h"
@@ -18,31 +15,8 @@
 
 using namespace cmp;
 
-namespace
-{
-
-BaseDomain octahedronDomain()
-{
-  const TriangleMesh o = test::octahedron();
-  return BaseDomain{ o, { 3, 0, 5, 1, 4, 2 } }; // features not in vertex order
-}
-
-/// Draws a remesh on the base domain's surface.
-TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh)
-{
-  TriangleMesh drawn;
-  for (const BaseLocation& at : mesh.locations)
-  {
-    Vec3 p = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-      p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
-    drawn.points.push_back(p);
-  }
-  drawn.triangles = mesh.triangles;
-  return drawn;
-}
-
-} // namespace
+using test::drawnOnDomain;
+using test::octahedronDomain;
 
 TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel)
 {
@@ -121,20 +95,19 @@ TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, level, remesh).ok());
 
-  for (const auto& [name, data, landmarks] : test::landmarkedRealModels())
+  for (const test::LandmarkedModel& model : test::landmarkedRealModels())
   {
-    TracedNet traced;
-    ASSERT_TRUE(traceFeatureNet(data.mesh, landmarks, domain, traced).ok());
-    StraightenedNet straight;
-    ASSERT_TRUE(straightenNet(traced, domain, straight).ok());
-    PatchParameterization parameterization;
-    ASSERT_TRUE(parameterizePatches(straight.net, domain, parameterization).ok());
+    const auto& [name, data, landmarks] = model;
+    test::ParameterizedModel parameterized;
+    const Status parameterizedStatus = test::parameterizeOnDomain(model, domain, parameterized);
+    ASSERT_TRUE(parameterizedStatus.ok()) << parameterizedStatus.message();
+    const TracedNet& net = parameterized.net;
     const auto start = std::chrono::steady_clock::now();
     std::vector<SurfaceSample> samples;
-    const Status placed = placeOnSurface(remesh, straight.net, domain, parameterization, samples);
+    const Status placed = placeOnSurface(remesh, net, domain, parameterized.parameterization, samples);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(placed.ok()) << name << ": " << placed.message();
-    const std::vector<Vec3> positions = samplePositions(straight.net, samples);
+    const std::vector<Vec3> positions = samplePositions(net, samples);
     for (int f = 0; f < domain.mesh.vertexCount(); ++f)
       EXPECT_EQ(positions[f], data.mesh.points[landmarks[f]]) << name << " landmark " << f;
 
@@ -158,7 +131,7 @@ TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
     // a model in another pose) the uniform samples make needle triangles,
     // some of which fold (Documentation/known-issues.md). Bounded here so
     // that it cannot grow unnoticed.
-    const int flipped = trianglesAgainstSurface(remesh, straight.net, samples, positions);
+    const int flipped = trianglesAgainstSurface(remesh, net, samples, positions);
     EXPECT_LT(flipped, (name == "spot" ? 0.012 : 0.005) * remesh.triangles.size()) << name;
     std::cout << name << ": level " << level << ", " << remesh.vertexCount() << " vertices placed in " << seconds
               << " s, Hausdorff distance " << distance.hausdorff() / diagonal << " of the diagonal (" << distance.aToB / diagonal << " remesh to input, " << distance.bToA / diagonal << " input to remesh), " << flipped
@@ -174,20 +147,15 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
   ASSERT_TRUE(buildBaseDomain(source.data.mesh, source.landmarks, domain).ok());
   const std::vector<std::string> names{ "381", "387", "spot" };
   std::vector<test::LandmarkedModel> models;
-  std::vector<TracedNet> nets(names.size());
-  std::vector<PatchParameterization> parameterizations(names.size());
+  std::vector<test::ParameterizedModel> parameterized(names.size());
   std::vector<ParameterizedSurface> surfaces(names.size());
   std::vector<const ParameterizedSurface*> collection;
   for (std::size_t i = 0; i < names.size(); ++i)
   {
     models.push_back(test::landmarkedRealModel(names[i]));
-    TracedNet traced;
-    ASSERT_TRUE(traceFeatureNet(models[i].data.mesh, models[i].landmarks, domain, traced).ok());
-    StraightenedNet straight;
-    ASSERT_TRUE(straightenNet(traced, domain, straight).ok());
-    nets[i] = std::move(straight.net);
-    ASSERT_TRUE(parameterizePatches(nets[i], domain, parameterizations[i]).ok());
-    ASSERT_TRUE(surfaces[i].build(nets[i], domain, parameterizations[i]).ok());
+    const Status status = test::parameterizeOnDomain(models[i], domain, parameterized[i]);
+    ASSERT_TRUE(status.ok()) << status.message();
+    ASSERT_TRUE(surfaces[i].build(parameterized[i].net, domain, parameterized[i].parameterization).ok());
     collection.push_back(&surfaces[i]);
   }
   const double tolerance = 0.002;
@@ -201,8 +169,9 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
   for (std::size_t i = 0; i < names.size(); ++i)
   {
     std::vector<SurfaceSample> samples;
-    ASSERT_TRUE(placeOnSurface(adaptive, nets[i], domain, parameterizations[i], samples).ok());
-    const std::vector<Vec3> positions = samplePositions(nets[i], samples);
+    ASSERT_TRUE(
+      placeOnSurface(adaptive, parameterized[i].net, domain, parameterized[i].parameterization, samples).ok());
+    const std::vector<Vec3> positions = samplePositions(parameterized[i].net, samples);
     const TriangleMesh mesh = remeshSurface(adaptive, positions);
     EXPECT_TRUE(checkSurface(mesh).ok()) << names[i] << ": " << checkSurface(mesh).message;
     const double diagonal = boundingBoxDiagonal(models[i].data.mesh);
