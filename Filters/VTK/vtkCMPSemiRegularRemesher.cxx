@@ -182,6 +182,8 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<
   points->AddArray(featureIds);
   points->AddArray(shared.baseTriangles);
   points->AddArray(shared.baseCoordinates);
+  // Lets a remesh alone say its levels (the wavelet filter needs them).
+  points->AddArray(shared.vertexLevels);
 }
 
 /// Unit normal of triangle (a, b, c); zero for a degenerate one.
