@@ -1,9 +1,10 @@
-"""Mesh PCA and Shape Blend spread over the ranks of `mpirun -np N pvbatch`:
+"""Mesh PCA, Shape Blend and Wavelet Detail Transfer spread over the ranks of `mpirun -np N pvbatch`:
 every rank builds the same remeshed collection (the shipped examples plus
 two deformed copies, level 3), rank 0 writes it as a .vtm, and each rank
 reads only its share of the blocks (the XML multiblock reader splits them by
 piece). The filters then combine across ranks; their mean, modes,
-coefficients and blend must equal a one-process run (a vtkDummyController)
+coefficients, blend and detail transfer (its two models held by different
+ranks) must equal a one-process run (a vtkDummyController)
 on the whole collection, to round-off.
 
   mpirun -np 2 pvbatch TestParallelPCA.py OUTPUT_FOLDER     (PYTHONPATH: the consistent_mesh package)
@@ -92,6 +93,15 @@ def analyse(collection, controller, weights):
     blend.SetInputData(collection)
     blend.SetWeights(weights)
     run(blend)
+    # The last block's coarse shape with the first block's details: with
+    # the blocks split in rank order, two different ranks hold them.
+    details = cmp.vtkCMPWaveletDetailTransfer()
+    details.SetController(controller)
+    details.SetInputData(collection)
+    details.SetCoarseModel(4)
+    details.SetDetailModel(0)
+    details.SetLastCoarseLevel(1)
+    run(details)
     mean = pca.GetOutputDataObject(0)
     if mean.GetNumberOfPoints() == 0:
         return None  # a rank other than 0: the collection's results are on rank 0
@@ -104,6 +114,7 @@ def analyse(collection, controller, weights):
                                      for r in range(table.GetNumberOfRows())]),
         "names": [table.GetValueByName(r, "Model").ToString() for r in range(table.GetNumberOfRows())],
         "blend": vtk_to_numpy(blend.GetOutputDataObject(0).GetPoints().GetData()).copy(),
+        "details": vtk_to_numpy(details.GetOutputDataObject(0).GetPoints().GetData()).copy(),
     }
 
 
@@ -147,11 +158,13 @@ def main():
     check_equal(len(spread["modes"]), len(alone["modes"]), "number of modes")
     check(len(alone["modes"]) == 4, "five distinct models give four modes, not %d" % len(alone["modes"]))
     for what, a, b in [("mean", spread["mean"], alone["mean"]), ("blend", spread["blend"], alone["blend"]),
+                       ("detail transfer", spread["details"], alone["details"]),
                        ("coefficients", spread["coefficients"], alone["coefficients"])] + \
             [("mode %d" % k, m, n) for k, (m, n) in enumerate(zip(spread["modes"], alone["modes"]))]:
         difference = numpy.abs(a - b).max()
         check(difference <= 1e-9 * scale, "%s differs from one process by %g" % (what, difference))
-    print("%d ranks holding %r blocks: mean, %d modes, coefficients and blend equal to one process"
+    print("%d ranks holding %r blocks: mean, %d modes, coefficients, blend and detail transfer equal "
+          "to one process"
           % (ranks, counts, len(alone["modes"])))
 
 
