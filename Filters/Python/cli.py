@@ -6,20 +6,29 @@ trace the patch layout (NAME.net.vtp, NAME.curves.vtp), straighten it and
 map every patch onto its base triangle (NAME.param.vtp,
 NAME.straight-curves.vtp). Then every straightened model is remeshed at once
 with one semi-regular connectivity (NAME.remesh.vtp, collection.vtm,
-remesh_connectivity.vtp).
+remesh_connectivity.vtp). On the collection of remeshes, on request: the
+transfer of one model's attributes onto the others (TARGET.from-NAME.vtp),
+principal components (mean.vtp with the modes, pca-coefficients.csv,
+pca-variances.csv, pca-aligned.vtm), blends (blend-grid.vtm, blend.vtp), and
+PNG pictures of these.
 
 Usage:
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
-                    [--adaptive-tolerance T] --output DIR
+                    [--adaptive-tolerance T] [--transfer-from NAME] [--pca K]
+                    [--blend] [--blend-weights W0,W1,...] [--no-render] [--view-up AXIS]
+                    --output DIR
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others; the exit status is 1 if any
-model failed, 2 for a usage error and 3 if the base domain could not be made.
-If the collection's remeshing fails, every model taking part in it fails.
+model failed or a requested stage failed, 2 for a usage error and 3 if the
+base domain could not be made. If the collection's remeshing fails, every
+model taking part in it fails. Pictures need an X display (xvfb-run -a
+will do); without one they are skipped, which is said and is no failure.
 """
 
 import argparse
+import csv
 import json
 import math
 import os
@@ -29,15 +38,22 @@ import time
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand, vtkIntArray, vtkLogger
-from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet
+from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter, vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 from . import CMPFilters as cmp
+from . import render
 
 
 EXIT_NO_BASE_DOMAIN = 3
 DEFAULT_LEVEL = 4
 MAX_LEVEL = 8
+# Rows of pca-modes.png: more would make the picture too large to read.
+RENDERED_MODES = 3
+BLEND_GRID_STEPS = 4
+WEIGHT_SUM_TOLERANCE = 1e-9  # vtkCMPShapeBlend's
+PCA_ALIGNMENT = "rigid, equal volume"  # vtkCMPMeshPCA's default, the paper's choice
+BLEND_ALIGNMENT = "rigid"  # vtkCMPShapeBlend's default: shapes keep their sizes
 
 
 class StageError(Exception):
@@ -316,6 +332,322 @@ def run_transfer(source_name, ready, remeshes, domain, output_folder):
         return {"source": source_name, "error": str(error)}
 
 
+def _table_column(table, name):
+    column = table.GetColumnByName(name)
+    return [column.GetValue(row) for row in range(table.GetNumberOfRows())]
+
+
+def write_table(table, path):
+    """A vtkTable as CSV, a header of the column names, numbers at full
+    precision."""
+    columns = [table.GetColumn(c) for c in range(table.GetNumberOfColumns())]
+    try:
+        with open(path, "w", newline="") as out:
+            writer = csv.writer(out)
+            writer.writerow([column.GetName() for column in columns])
+            for row in range(table.GetNumberOfRows()):
+                writer.writerow([_csv_value(column.GetValue(row)) for column in columns])
+    except OSError as error:
+        raise StageError("cannot write '%s': %s" % (path, error))
+
+
+def _csv_value(value):
+    return repr(value) if isinstance(value, float) else value
+
+
+def principal_components(remeshes, modes, output_folder):
+    """MeshPCA on the collection of remeshes: writes mean.vtp (the mean
+    with point arrays Mode0.. of one standard deviation each),
+    pca-coefficients.csv (one row per model), pca-variances.csv (one row per
+    mode) and pca-aligned.vtm (the models aligned as the analysis saw them);
+    returns the stage's figures and the mean. Raises StageError if the
+    filter fails or a file cannot be written."""
+    pca = cmp.vtkCMPMeshPCA()
+    pca.SetInputData(remeshes)
+    pca.SetNumberOfModes(modes)
+    start = time.perf_counter()
+    mean = _run(pca)
+    seconds = time.perf_counter() - start
+    coefficients = pca.GetOutputDataObject(1)
+    variances = pca.GetOutputDataObject(2)
+    write_polydata(mean, os.path.join(output_folder, "mean.vtp"))
+    write_table(coefficients, os.path.join(output_folder, "pca-coefficients.csv"))
+    write_table(variances, os.path.join(output_folder, "pca-variances.csv"))
+    write_multiblock(pca.GetOutputDataObject(4), os.path.join(output_folder, "pca-aligned.vtm"))
+    value = _field_reader(mean)
+    ratios = _table_column(variances, "ExplainedVarianceRatio")
+    figures = {
+        "requested_modes": modes,
+        "modes": int(value("ModeCount")),
+        "models": _table_column(coefficients, "Model"),
+        "alignment": PCA_ALIGNMENT,
+        "alignment_iterations": int(value("AlignmentIterations")),
+        "alignment_converged": bool(value("AlignmentConverged")),
+        "total_variance": _significant(value("TotalVariance")),
+        "variances": [_significant(v) for v in _table_column(variances, "Variance")],
+        "standard_deviations": [_significant(v) for v in _table_column(variances, "StandardDeviation")],
+        "explained_variance_ratios": [round(r, 6) for r in ratios],
+        "explained_variance": round(sum(ratios), 6),
+        "files": ["mean.vtp", "pca-coefficients.csv", "pca-variances.csv", "pca-aligned.vtm"],
+        "seconds": round(seconds, 4),
+    }
+    return figures, mean
+
+
+def run_pca(modes, ready, remeshes, output_folder):
+    """The --pca stage, reported but never fatal to the models: (figures,
+    mean or None)."""
+    remeshed = 0 if remeshes is None else len(ready)
+    if remeshed < 2:
+        return {"requested_modes": modes,
+                "error": "principal components need at least two remeshed models, not %d" % remeshed}, None
+    print("principal components of %d models" % len(ready), flush=True)
+    try:
+        return principal_components(remeshes, modes, output_folder)
+    except StageError as error:
+        return {"requested_modes": modes, "error": str(error)}, None
+
+
+def _sub_collection(remeshes, indices):
+    """The blocks `indices` of `remeshes`, names kept."""
+    blocks = vtkMultiBlockDataSet()
+    for position, index in enumerate(indices):
+        blocks.SetBlock(position, remeshes.GetBlock(index))
+        blocks.GetMetaData(position).Set(vtkCompositeDataSet.NAME(),
+                                         remeshes.GetMetaData(index).Get(vtkCompositeDataSet.NAME()))
+    return blocks
+
+
+def _blend(blocks, weights):
+    """ShapeBlend of `blocks` with `weights`: (surface, extrapolating)."""
+    blend = cmp.vtkCMPShapeBlend()
+    blend.SetInputData(blocks)
+    blend.SetWeights([float(w) for w in weights])
+    surface = vtkPolyData()
+    surface.ShallowCopy(_run(blend))
+    return surface, bool(_field_reader(surface)("Extrapolating"))
+
+
+def _weights_text(weights):
+    return ", ".join("%g" % w for w in weights)
+
+
+def blend_grid_layout(count):
+    """[(weights, column, row)] and the grid's (columns, rows): for three
+    models the paper's triangle of blends (Figure 14), model 0 at the top,
+    1 bottom left, 2 bottom right, in steps of 1/BLEND_GRID_STEPS; for two,
+    one row from model 0 to model 1."""
+    n = BLEND_GRID_STEPS
+    if count == 2:
+        return [((1 - c / n, c / n), c, 0) for c in range(n + 1)], (n + 1, 1)
+    layout = []
+    for row in range(n + 1):
+        for c in range(row + 1):
+            layout.append(((1 - row / n, (row - c) / n, c / n), (n - row) / 2 + c, row))
+    return layout, (n + 1, n + 1)
+
+
+def blend_grid(ready, remeshes, output_folder):
+    """Blends of the first three remeshed models (two if there are only
+    two) on a grid of weights: writes blend-grid.vtm, one block per blend
+    named by its weights; returns the figures and the blends for the
+    picture. Raises StageError if a blend fails or the file cannot be
+    written."""
+    names = [m.name for m in ready[:3]]
+    blocks = _sub_collection(remeshes, range(len(names)))
+    layout, grid = blend_grid_layout(len(names))
+    start = time.perf_counter()
+    results = vtkMultiBlockDataSet()
+    entries = []
+    for index, (weights, column, row) in enumerate(layout):
+        surface, _ = _blend(blocks, weights)
+        label = " + ".join("%g %s" % (w, name) for w, name in zip(weights, names) if w)
+        results.SetBlock(index, surface)
+        results.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), label)
+        # A corner is one model: its name says more than its weights.
+        corner = [name for w, name in zip(weights, names) if w == 1]
+        entries.append((column, row, surface, corner[0] if corner else _weights_text(weights)))
+    write_multiblock(results, os.path.join(output_folder, "blend-grid.vtm"))
+    figures = {
+        "models": names,
+        "alignment": BLEND_ALIGNMENT,
+        "blends": len(layout),
+        "weights": [list(weights) for weights, _, _ in layout],
+        "file": "blend-grid.vtm",
+        "seconds": round(time.perf_counter() - start, 4),
+    }
+    return figures, (entries, grid)
+
+
+def run_blend_grid(ready, remeshes, output_folder):
+    """The --blend stage, reported but never fatal to the models: (figures,
+    what the picture needs or None)."""
+    remeshed = 0 if remeshes is None else len(ready)
+    if remeshed < 2:
+        return {"models": [m.name for m in ready[:3]] if remeshes is not None else [],
+                "error": "a blend needs at least two remeshed models, not %d" % remeshed}, None
+    print("blending %s" % ", ".join(m.name for m in ready[:3]), flush=True)
+    try:
+        return blend_grid(ready, remeshes, output_folder)
+    except StageError as error:
+        return {"models": [m.name for m in ready[:3]], "error": str(error)}, None
+
+
+def run_blend(weights, models, ready, remeshes, output_folder):
+    """The --blend-weights stage: one blend of every model with the given
+    weights, written to blend.vtp; (figures, blend or None)."""
+    named = {m.name: w for m, w in zip(models, weights)}
+    missing = [m.name for m in models if m not in ready]
+    if remeshes is None or missing:
+        failed = missing or [m.name for m in models]
+        return {"weights": named, "error": "the weights are for every model, and %s %s not remeshed"
+                % (", ".join(failed), "was" if len(failed) == 1 else "were")}, None
+    print("blending every model with weights %s" % _weights_text(weights), flush=True)
+    start = time.perf_counter()
+    try:
+        surface, extrapolating = _blend(remeshes, weights)
+        write_polydata(surface, os.path.join(output_folder, "blend.vtp"))
+    except StageError as error:
+        return {"weights": named, "error": str(error)}, None
+    return {"weights": named, "alignment": BLEND_ALIGNMENT, "extrapolating": extrapolating, "file": "blend.vtp",
+            "seconds": round(time.perf_counter() - start, 4)}, surface
+
+
+class Pictures:
+    """The PNGs of the run, each made on its own so that one failure does
+    not stop the others."""
+
+    def __init__(self, output_folder, up):
+        self.output_folder = output_folder
+        self.up = up
+        self.files = []
+        self.notes = []
+        self.errors = {}
+
+    def make(self, name, function, *args):
+        path = os.path.join(self.output_folder, name)
+        try:
+            function(*args, path)
+            self.files.append(name)
+        except (render.RenderError, StageError) as error:
+            self.errors[name] = str(error)
+
+    def view(self, surface):
+        return render.View(surface, self.up)
+
+
+def make_pictures(pictures, stages, models):
+    """Draws what the stages in `stages` (name -> what its picture needs)
+    produced."""
+    pca = stages.get("pca")
+    if pca is not None:
+        mean, figures = pca
+        view = pictures.view(mean)
+        pictures.make("mean.png", render.picture_mean, mean, len(figures["models"]), view)
+        shown = min(figures["modes"], RENDERED_MODES)
+        if shown:
+            pictures.make("pca-modes.png", render.picture_modes, mean, figures["standard_deviations"][:shown],
+                          figures["explained_variance_ratios"][:shown], view)
+        else:
+            pictures.notes.append("pca-modes.png: the collection has no mode of variation to show")
+    grid = stages.get("blend_grid")
+    if grid is not None:
+        (entries, (columns, rows)), names = grid
+        if len(names) == 3:
+            title = "Blends of %s (top), %s (bottom left), %s (bottom right)" % tuple(names)
+        else:
+            title = "Blends from %s (left) to %s (right)" % tuple(names)
+        pictures.make("blend-grid.png", render.picture_blend_grid, entries, columns, rows, title,
+                      pictures.view([surface for _, _, surface, _ in entries]))
+    blend = stages.get("blend")
+    if blend is not None:
+        surface, weights = blend
+        pictures.make("blend.png", render.picture_single, surface, "Blend with weights %s" % _weights_text(weights),
+                      pictures.view(surface), None, None)
+    transfer = stages.get("transfer")
+    if transfer is not None:
+        figures, remeshes = transfer
+        make_transfer_pictures(pictures, figures, next(m for m in models if m.name == figures["source"]), remeshes)
+
+
+def _block_by_name(blocks):
+    return {blocks.GetMetaData(i).Get(vtkCompositeDataSet.NAME()): blocks.GetBlock(i)
+            for i in range(blocks.GetNumberOfBlocks())}
+
+
+def make_transfer_pictures(pictures, figures, source, remeshes):
+    """TARGET.from-SOURCE.png per target: the source's texture image on the
+    target when there is one; else a checkerboard on the transferred
+    texture coordinates, or the first transferred point array in colour.
+    Each target is turned as the source stands (collections come in every
+    orientation), by the rigid motion that best carries its remesh vertices
+    onto the source's, so all are seen from the same side."""
+    remesh = _block_by_name(remeshes)
+    source_points = render.points_of(remesh[source.name])
+    view = pictures.view(remesh[source.name])
+    image = render.find_texture_image(source.mesh_path)
+    texture = None
+    if image is not None:
+        try:
+            texture = render.read_texture(image)
+        except render.RenderError as error:
+            pictures.notes.append("%s; the transfers are drawn without it" % error)
+    checker = None
+    for target in figures["targets"]:
+        name = "%s.from-%s" % (target, source.name)
+        try:
+            surface = _read_polydata(os.path.join(pictures.output_folder, name + ".vtp"))
+        except StageError as error:
+            pictures.errors[name + ".png"] = str(error)
+            continue
+        surface = render.moved(surface, *render.rigid_motion(render.points_of(remesh[target]), source_points))
+        title = "%s's %%s on %s" % (source.name, target)
+        if surface.GetPointData().GetTCoords() is not None:
+            if texture is None:
+                if checker is None:
+                    pictures.notes.append("no texture image beside %s (%s_texture.png or map_Kd of its .mtl): "
+                                          "its texture coordinates are drawn with a checkerboard"
+                                          % (source.mesh_path, source.name))
+                    checker = render.checkerboard_texture()
+                pictures.make(name + ".png", render.picture_single, surface, title % "texture coordinates",
+                              view, checker, None)
+            else:
+                pictures.make(name + ".png", render.picture_single, surface, title % "texture",
+                              view, texture, None)
+            continue
+        array = render.colour_array(surface)
+        if array is None:
+            pictures.notes.append("%s.png: %s has neither texture coordinates nor a point array to colour by"
+                                  % (name, source.name))
+            continue
+        pictures.make(name + ".png", render.picture_single, surface, title % array, view, None, array)
+
+
+def run_pictures(args, stages, models):
+    """The pictures of the stages that ran: the report's "renders"."""
+    if args.no_render:
+        return {"skipped": "--no-render"}
+    reason = render.unavailable_reason()
+    if reason is not None:
+        return {"skipped": reason}
+    print("rendering", flush=True)
+    pictures = Pictures(args.output, args.view_up)
+    start = time.perf_counter()
+    make_pictures(pictures, stages, models)
+    figures = {"files": pictures.files, "seconds": round(time.perf_counter() - start, 4)}
+    if pictures.notes:
+        figures["notes"] = pictures.notes
+    if pictures.errors:
+        figures["errors"] = pictures.errors
+    return figures
+
+
+def _read_polydata(path):
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    return _run(reader)
+
+
 def describe_base_domain(domain, source):
     report = {
         "source": source,
@@ -370,7 +702,22 @@ def parse_arguments(argv):
                         "default 0: uniform)")
     parser.add_argument("--transfer-from", metavar="NAME",
                         help="carry model NAME's point arrays and texture coordinates onto every other remesh "
-                        "(writes TARGET.from-NAME.vtp)")
+                        "(TARGET.from-NAME.vtp; TARGET.from-NAME.png with NAME's texture image)")
+    parser.add_argument("--pca", type=int, metavar="K",
+                        help="principal components of the remeshes: their mean and K modes of variation "
+                        "(mean.vtp with point arrays Mode0.., pca-coefficients.csv, pca-variances.csv, "
+                        "pca-aligned.vtm; mean.png, pca-modes.png)")
+    parser.add_argument("--blend", action="store_true",
+                        help="blend the first three models (the first two if there are two) on a grid of weights "
+                        "(blend-grid.vtm, blend-grid.png)")
+    parser.add_argument("--blend-weights", nargs="+", metavar="W",
+                        help="blend every model with these weights, one per --mesh in order, summing to 1, "
+                        "separated by commas or spaces; a weight outside [0, 1] extrapolates (blend.vtp, blend.png). "
+                        "Write a leading negative weight as --blend-weights=-0.5,1.5")
+    parser.add_argument("--no-render", action="store_true",
+                        help="make no PNG pictures (they need an X display; xvfb-run -a gives one)")
+    parser.add_argument("--view-up", default="+y", metavar="AXIS",
+                        help="the models' up axis for the pictures: +y (default), -y, +z, -z, +x or -x")
     parser.add_argument("--output", required=True, help="output folder")
     args = parser.parse_args(argv)
     if not args.mesh:
@@ -384,6 +731,21 @@ def parse_arguments(argv):
     if args.transfer_from is not None and args.transfer_from not in names:
         parser.error("--transfer-from %s: no model is named so (models are named by file name: %s)"
                      % (args.transfer_from, ", ".join(names)))
+    count = len(args.mesh)
+    if args.pca is not None:
+        if count < 2:
+            parser.error("--pca %d: principal components need at least two models" % args.pca)
+        if not 1 <= args.pca <= count - 1:
+            parser.error("--pca %d: give a number of modes from 1 to %d (%d models vary in at most %d directions)"
+                         % (args.pca, count - 1, count, count - 1))
+    if args.blend and count < 2:
+        parser.error("--blend: blending needs at least two models")
+    if args.blend_weights is not None:
+        args.blend_weights = parse_weights(parser, args.blend_weights, count)
+    try:
+        args.view_up = render.parse_axis(args.view_up)
+    except ValueError as error:
+        parser.error("--view-up %s: %s" % (args.view_up, error))
     if args.base_domain is None and args.base_domain_from is None:
         args.base_domain_from = 0
     if args.base_domain_from is not None and not 0 <= args.base_domain_from < len(args.mesh):
@@ -398,6 +760,29 @@ def parse_arguments(argv):
     if os.path.exists(args.output) and not os.path.isdir(args.output):
         parser.error("--output %s exists and is not a folder" % args.output)
     return args
+
+
+def parse_weights(parser, words, count):
+    """The --blend-weights words (commas or spaces between weights) as
+    floats, or a usage error."""
+    given = " ".join(words)
+    texts = [text for word in words for text in word.split(",") if text.strip()]
+    weights = []
+    for text in texts:
+        try:
+            weights.append(float(text))
+        except ValueError:
+            parser.error("--blend-weights %s: '%s' is not a number" % (given, text.strip()))
+        if not math.isfinite(weights[-1]):
+            parser.error("--blend-weights %s: '%s' is not a finite number" % (given, text.strip()))
+    if len(weights) != count:
+        parser.error("--blend-weights %s: give one weight per model: %d weight%s for %d models"
+                     % (given, len(weights), "" if len(weights) == 1 else "s", count))
+    total = math.fsum(weights)
+    if abs(total - 1.0) > WEIGHT_SUM_TOLERANCE:
+        parser.error("--blend-weights %s: the weights must sum to 1 (an affine combination), but they sum to %.12g"
+                     % (given, total))
+    return weights
 
 
 def main(argv=None):
@@ -456,6 +841,7 @@ def main(argv=None):
 
     # One run of the remesher for the whole collection: one connectivity.
     ready = [m for m in models if m.parameterized is not None]
+    remeshes = None
     report["remesh"] = {"level": args.level, "adaptive_tolerance": args.adaptive_tolerance,
                         "models": [m.name for m in ready]}
     if ready:
@@ -475,6 +861,25 @@ def main(argv=None):
         if args.transfer_from is not None:
             report["transfer"] = run_transfer(args.transfer_from, ready, remeshes, domain, args.output)
 
+    # What each stage's pictures need, for the stages that gave a result.
+    stages = {}
+    if "transfer" in report and "error" not in report["transfer"]:
+        stages["transfer"] = (report["transfer"], remeshes)
+    if args.pca is not None:
+        report["pca"], mean = run_pca(args.pca, ready, remeshes, args.output)
+        if mean is not None:
+            stages["pca"] = (mean, report["pca"])
+    if args.blend:
+        report["blend_grid"], grid = run_blend_grid(ready, remeshes, args.output)
+        if grid is not None:
+            stages["blend_grid"] = (grid, report["blend_grid"]["models"])
+    if args.blend_weights is not None:
+        report["blend"], blend = run_blend(args.blend_weights, models, ready, remeshes, args.output)
+        if blend is not None:
+            stages["blend"] = (blend, args.blend_weights)
+    if any(key in report for key in ("transfer", "pca", "blend_grid", "blend")):
+        report["renders"] = run_pictures(args, stages, models)
+
     for model in models:
         report["models"][model.name] = model.report
     failed = [m.name for m in models if m.report.get("status") != "ok"]
@@ -485,8 +890,10 @@ def main(argv=None):
     print_summary(models, report)
     if domain is None:
         return EXIT_NO_BASE_DOMAIN
-    # A requested stage that failed is a failure too.
-    return 1 if failed or "error" in report.get("transfer", {}) else 0
+    # A requested stage that failed is a failure too; pictures skipped for
+    # want of a display are not.
+    stage_failed = any("error" in report.get(key, {}) for key in ("transfer", "pca", "blend_grid", "blend"))
+    return 1 if failed or stage_failed or "errors" in report.get("renders", {}) else 0
 
 
 def print_summary(models, report):
@@ -503,6 +910,7 @@ def print_summary(models, report):
         else:
             print("transfer from %s: onto %d remeshes (%.3f s)"
                   % (transfer["source"], len(transfer["targets"]), transfer["seconds"]))
+    print_stage_summary(report)
     remesh = report.get("remesh", {})
     if "error" in remesh:
         print("remesh: FAILED: %s" % remesh["error"])
@@ -524,3 +932,48 @@ def print_summary(models, report):
         hausdorff = "-" if hausdorff is None else "%.2f" % (100 * hausdorff)
         print("%-*s  %8s  %8.3f  %11s  %12s  %16s  %s"
               % (width, model.name, r.get("vertices", "-"), seconds, net, straight, hausdorff, result))
+
+
+def print_stage_summary(report):
+    """The lines of the stages after remeshing."""
+    pca = report.get("pca")
+    if pca is not None:
+        if "error" in pca:
+            print("pca: FAILED: %s" % pca["error"])
+        else:
+            ratios = pca["explained_variance_ratios"]
+            print("pca: %d mode%s of %d models (%s alignment, %d iterations), %.1f %% of the variance, %.3f s"
+                  % (pca["modes"], "" if pca["modes"] == 1 else "s", len(pca["models"]), pca["alignment"],
+                     pca["alignment_iterations"], 100 * pca["explained_variance"], pca["seconds"]))
+            print("  %-6s  %12s  %12s  %9s" % ("mode", "variance", "std. dev.", "explained"))
+            for k, (variance, deviation, ratio) in enumerate(zip(pca["variances"], pca["standard_deviations"],
+                                                                 ratios)):
+                print("  Mode%-2d  %12.6g  %12.6g  %8.1f%%" % (k, variance, deviation, 100 * ratio))
+            print("  written: %s" % ", ".join(pca["files"]))
+    grid = report.get("blend_grid")
+    if grid is not None:
+        if "error" in grid:
+            print("blend grid: FAILED: %s" % grid["error"])
+        else:
+            print("blend grid: %d blends of %s (%.3f s), written: %s"
+                  % (grid["blends"], ", ".join(grid["models"]), grid["seconds"], grid["file"]))
+    blend = report.get("blend")
+    if blend is not None:
+        if "error" in blend:
+            print("blend: FAILED: %s" % blend["error"])
+        else:
+            print("blend: weights %s%s (%.3f s), written: %s"
+                  % (_weights_text(blend["weights"].values()),
+                     ", extrapolating (a weight outside [0, 1])" if blend["extrapolating"] else "",
+                     blend["seconds"], blend["file"]))
+    renders = report.get("renders")
+    if renders is not None:
+        if "skipped" in renders:
+            print("pictures: skipped: %s" % renders["skipped"])
+        else:
+            print("pictures: %d PNG%s (%.2f s): %s" % (len(renders["files"]), "" if len(renders["files"]) == 1
+                                                         else "s", renders["seconds"], ", ".join(renders["files"])))
+            for note in renders.get("notes", []):
+                print("  note: %s" % note)
+            for name, error in renders.get("errors", {}).items():
+                print("  %s: FAILED: %s" % (name, error))
