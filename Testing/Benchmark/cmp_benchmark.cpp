@@ -6,6 +6,7 @@
 #include "BenchmarkModels.h"
 #include "BenchmarkReport.h"
 #include "BenchmarkRunner.h"
+#include "BenchmarkShapeAnalysis.h"
 #include "BenchmarkStages.h"
 
 #include <algorithm>
@@ -61,7 +62,10 @@ stages' figures such as the net length per sqrt(area)) plus a CSV beside them.
   --large-repeat N      runs per stage on the large model (default: 1)
   --min-triangles N     triangle count of the large model (default: 1000000)
   --no-large            skip the large model
-  --only NAME[,NAME]    run only these models ("381", "spot", "large" or its full name)
+  --only NAME[,NAME]    run only these models ("381", "spot", "large" or its full name);
+                        "pca" names the shape-analysis timing (100 models x 40,000
+                        vertices, alignment + 10 principal components), which runs
+                        after the models when --only is not given
   --list                print the models and exit
   --help                print this
 )";
@@ -142,7 +146,8 @@ bool largeWanted(const Options& options, const std::vector<ModelSpec>& models)
   if (!options.large)
     return false;
   return options.only.empty() || std::any_of(options.only.begin(), options.only.end(), [&](const std::string& name) {
-    return std::none_of(models.begin(), models.end(), [&](const ModelSpec& m) { return m.name == name; });
+    return name != "pca" &&
+      std::none_of(models.begin(), models.end(), [&](const ModelSpec& m) { return m.name == name; });
   });
 }
 
@@ -210,6 +215,14 @@ std::string remeshFiguresNote()
          "hausdorff_per_diagonal_lN = two-sided Hausdorff distance (both surfaces sampled at the points of a "
          "3-step barycentric grid per triangle) / bounding-box diagonal of the input, distance_seconds_lN = time of "
          "that distance computation alone (last run)";
+}
+
+std::string waveletFiguresNote()
+{
+  return "`wavelet` (a measurement, not counted in `total`) builds the level-6 remesh unless `remesh` did, then "
+         "wavelet_seconds = one Loop wavelet analysis + synthesis of its positions with local detail frames (best "
+         "of 3; target < 0.2 s), wavelet_build_seconds = setting up the transform, wavelet_error = largest "
+         "reconstruction error / bounding-box diagonal";
 }
 
 /// \brief Triangle count of `spec`'s file, from a result already measured or
@@ -302,6 +315,8 @@ int run(const Options& options)
   info.notes.push_back(traceFiguresNote());
   info.notes.push_back(remeshFiguresNote());
 
+  info.notes.push_back(waveletFiguresNote());
+
   std::vector<ModelResult> results;
   for (const ModelSpec& spec : models)
   {
@@ -320,7 +335,19 @@ int run(const Options& options)
     results.push_back(runAndReport(*large, shared, pipelineStages(), options.largeRepetitions));
     info.notes.push_back(largeNote(*large, results, options.minTriangles));
   }
-  if (results.empty())
+  const bool shapeAnalysis = selected(options, "pca");
+  if (shapeAnalysis)
+  {
+    std::cerr << "shape analysis: 100 models x 40,000 vertices\n";
+    ShapeAnalysisTiming timing;
+    if (cmp::Status status = timeShapeAnalysis(100, 200, 10, options.repetitions, timing); !status.ok())
+    {
+      std::cerr << "cmp_benchmark: shape analysis failed: " << status.message() << "\n";
+      return 1;
+    }
+    info.notes.push_back(describe(timing));
+  }
+  if (results.empty() && !shapeAnalysis)
   {
     std::cerr << "cmp_benchmark: no model selected (see --list)\n";
     return 2;

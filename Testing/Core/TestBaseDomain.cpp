@@ -2,6 +2,7 @@
 #include "MeshFile.h"
 #include "SurfaceCheck.h"
 #include "TestMeshes.h"
+#include "TestShapes.h"
 
 #include <gtest/gtest.h>
 

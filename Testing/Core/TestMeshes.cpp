@@ -38,30 +38,6 @@ TriangleMesh sphere(int levels)
   return mesh;
 }
 
-TriangleMesh torus(int n, int m)
-{
-  TriangleMesh mesh;
-  for (int i = 0; i < n; ++i)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
-      mesh.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
-    }
-  }
-  for (int i = 0; i < n; ++i)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
-                d = i * m + (j + 1) % m;
-      mesh.triangles.push_back({ a, b, c });
-      mesh.triangles.push_back({ a, c, d });
-    }
-  }
-  return mesh;
-}
-
 TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b)
 {
   TriangleMesh mesh = a;

@@ -28,8 +28,6 @@ TriangleMesh tetrahedron(const Vec3& offset = Vec3::Zero());
 /// \brief Octahedron subdivided `levels` times, projected to the unit sphere.
 TriangleMesh sphere(int levels);
 
-/// \brief A torus (genus 1) made of an n-by-m grid.
-TriangleMesh torus(int n, int m);
 
 /// \brief Appends `b` to `a` as a separate component.
 TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b);

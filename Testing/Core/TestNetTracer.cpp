@@ -3,6 +3,7 @@
 #include "NetTracer.h"
 #include "LayoutValidator.h"
 #include "TestMeshes.h"
+#include "TestShapes.h"
 
 #include <gtest/gtest.h>
 

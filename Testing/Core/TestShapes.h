@@ -16,6 +16,9 @@
 namespace cmp::test
 {
 
+/// \brief A torus (genus 1) made of an n-by-m grid: n*m vertices.
+TriangleMesh torus(int n, int m);
+
 /// \brief A smooth displacement field over `points`: a product of sine
 ///        waves of the coordinates, different for every `seed`, of largest
 ///        component about `amplitude`.

@@ -1,6 +1,7 @@
 #include "SurfaceCheck.h"
 #include "MeshFile.h"
 #include "TestMeshes.h"
+#include "TestShapes.h"
 
 #include <gtest/gtest.h>
 
