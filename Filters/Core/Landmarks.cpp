@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -152,6 +153,58 @@ Status readLandmarkFile(const std::string& path, const TriangleMesh& mesh, const
     return Status::error(path + ": no landmarks in the file");
   status = validateLandmarks(landmarks, mesh.vertexCount());
   return status.ok() ? status : Status::error(path + ": " + status.message());
+}
+
+Status formatLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
+  const std::vector<int>& fileToMeshPoint, std::string& text)
+{
+  text.clear();
+  if (landmarks.empty())
+    return Status::error("no landmarks to write");
+  if (Status s = validateLandmarks(landmarks, mesh.vertexCount()); !s.ok())
+    return s;
+  // The reader maps file ids to mesh vertices; write the first file id of
+  // each landmark vertex (identity when no map is given).
+  std::vector<int> fileIdOf(mesh.vertexCount(), -1);
+  if (fileToMeshPoint.empty())
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      fileIdOf[v] = v;
+  for (int i = static_cast<int>(fileToMeshPoint.size()) - 1; i >= 0; --i)
+    if (fileToMeshPoint[i] >= 0 && fileToMeshPoint[i] < mesh.vertexCount())
+      fileIdOf[fileToMeshPoint[i]] = i;
+  const std::string ext = fileExtension(path);
+  std::ostringstream out;
+  out.precision(17); // positions round-trip, so .vts and .csv reread exactly
+  if (ext == "csv")
+    out << "x,y,z\n";
+  for (int f = 0; f < static_cast<int>(landmarks.size()); ++f)
+  {
+    const int v = landmarks[f];
+    if (fileIdOf[v] < 0)
+      return Status::error("landmark " + std::to_string(f) + " is on vertex " + std::to_string(v) +
+        ", which no point of the mesh file maps to");
+    const Vec3& p = mesh.points[v];
+    if (ext == "csv")
+      out << p.x() << "," << p.y() << "," << p.z() << "\n";
+    else if (ext == "vts")
+      out << fileIdOf[v] << " " << p.x() << " " << p.y() << " " << p.z() << "\n";
+    else
+      out << "lk " << fileIdOf[v] << "\n";
+  }
+  text = out.str();
+  return {};
+}
+
+Status writeLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
+  const std::vector<int>& fileToMeshPoint)
+{
+  std::string text;
+  if (Status s = formatLandmarkFile(path, landmarks, mesh, fileToMeshPoint, text); !s.ok())
+    return Status::error(path + ": " + s.message());
+  std::ofstream file(path);
+  if (!file || !(file << text) || !file.flush())
+    return Status::error(path + ": cannot write the landmark file");
+  return {};
 }
 
 Status validateLandmarks(const LandmarkList& landmarks, int vertexCount, int expectedCount)

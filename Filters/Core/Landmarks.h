@@ -35,6 +35,21 @@ using LandmarkList = std::vector<int>;
 Status readLandmarkFile(const std::string& path, const TriangleMesh& mesh, const std::vector<int>& fileToMeshPoint,
   LandmarkList& landmarks);
 
+/// \brief The text of a landmark file for `landmarks` on `mesh`, in the
+///        format `readLandmarkFile` reads for `path`'s extension (`.vts`:
+///        `id x y z`, `.csv`: a header row then `x,y,z`, else `lk id`), so
+///        that reading it back gives the same landmarks.
+///
+/// `fileToMeshPoint` (may be empty for identity) is the same map the reader
+/// takes: ids are written as the first file point of each mesh vertex, so
+/// the file pairs with the original mesh file even when points were welded.
+Status formatLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
+  const std::vector<int>& fileToMeshPoint, std::string& text);
+
+/// \brief Writes `formatLandmarkFile`'s text to `path`.
+Status writeLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
+  const std::vector<int>& fileToMeshPoint);
+
 /// \brief Checks that every landmark is a valid vertex, no vertex carries two
 ///        features, and (when `expectedCount >= 0`) that there are exactly
 ///        `expectedCount` of them.

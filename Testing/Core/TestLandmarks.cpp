@@ -62,6 +62,33 @@ TEST(Landmarks, MapsFileIdsThroughWelding)
     "x.pinned:1: landmark vertex id 8 is out of range (the mesh has 8 points)");
 }
 
+TEST(Landmarks, WrittenFilesReadBackInEveryFormat)
+{
+  const TriangleMesh mesh = test::octahedron();
+  // File points 3 and 6 were welded into mesh vertex 0, and file point 0
+  // is mesh vertex 3: the writer gives each vertex its first file point.
+  const std::vector<int> fileToMesh = { 3, 1, 2, 0, 4, 5, 0 };
+  const LandmarkList landmarks = { 5, 0, 3 };
+  for (const char* name : { "round.vts", "round.pinned", "round.csv", "round.txt" })
+  {
+    const std::string path = test::tempPath(name);
+    ASSERT_TRUE(writeLandmarkFile(path, landmarks, mesh, fileToMesh).ok()) << name;
+    LandmarkList read;
+    const Status status = readLandmarkFile(path, mesh, fileToMesh, read);
+    ASSERT_TRUE(status.ok()) << name << ": " << status.message();
+    EXPECT_EQ(read, landmarks) << name;
+  }
+  std::string text;
+  ASSERT_TRUE(formatLandmarkFile("a.pinned", landmarks, mesh, fileToMesh, text).ok());
+  EXPECT_EQ(text, "lk 5\nlk 3\nlk 0\n");
+
+  expectError(formatLandmarkFile("a.vts", {}, mesh, {}, text), "no landmarks to write");
+  expectError(formatLandmarkFile("a.vts", { 1, 1 }, mesh, {}, text), "duplicate landmark");
+  expectError(formatLandmarkFile("a.vts", { 1 }, mesh, { 0, 0 }, text), "which no point of the mesh file maps to");
+  expectError(writeLandmarkFile("/nonexistent-folder/a.vts", landmarks, mesh, {}),
+    "/nonexistent-folder/a.vts: cannot write the landmark file");
+}
+
 TEST(Landmarks, ReportsBadFiles)
 {
   const TriangleMesh mesh = test::octahedron();
