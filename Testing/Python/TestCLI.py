@@ -1,18 +1,26 @@
 """Tests of the consistent-remesh command, run as a user would run it.
 
-  pvpython TestCLI.py --command <build>/bin/consistent-remesh [--data DATA] CASE
+  pvpython TestCLI.py --command <build>/bin/consistent-remesh [--data DATA]
+                     [--pictures [--keep-pictures DIR]] CASE
 
 CASE is one of: shipped-examples, collection, given-base-domain,
 failure-isolation, argument-errors, base-domain-mismatch. Every case but
 argument-errors and shipped-examples needs the shared data (shipped-examples
 takes the project's Data folder). Each run writes into a fresh temporary
 folder.
+
+The command's PNG pictures need an X display. With --pictures (run the test
+under xvfb-run -a) the collection case checks them, and --keep-pictures
+copies them to DIR for a look; without it the collection runs with DISPLAY
+unset and checks that the pictures are skipped and said to be.
 """
 
 import argparse
+import csv
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -36,13 +44,20 @@ from cmp_test_support import (
 
 COMMAND = None
 DATA = None
+PICTURES = False
+KEEP_PICTURES = None
 
 
-def run_cli(arguments, output=None):
+def run_cli(arguments, output=None, display=None):
     """Runs consistent-remesh; returns (exit status, stdout, stderr, report
     or None). The command must find its Python package by itself, so
-    PYTHONPATH is not passed on."""
+    PYTHONPATH is not passed on. `display`: None keeps this process's
+    DISPLAY, "" unsets it, anything else replaces it."""
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PV_PLUGIN_PATH")}
+    if display is not None:
+        env.pop("DISPLAY", None)
+        if display:
+            env["DISPLAY"] = display
     command = [COMMAND] + list(arguments) + (["--output", output] if output else [])
     result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             universal_newlines=True, timeout=300)
@@ -299,13 +314,19 @@ def check_domain_report(domain, source, what):
 
 def case_collection(tmp):
     """Spot and every landmarked SHREC'07 model; L0 built from Spot;
-    remeshed at level 3."""
+    remeshed at level 3; Spot's texture carried onto the others, three
+    principal modes, the grid of blends of the first three models, the blend
+    (1, 0, ...) and, with --pictures, their pictures."""
     spot = spot_paths()
     pairs = [spot] + shrec_pairs()
     check_equal(len(pairs), 11, "models in the collection")
     out = os.path.join(tmp, "out")
+    names = [os.path.splitext(os.path.basename(m))[0] for m, _ in pairs]
+    # One run for every stage: (1, 0, ...) must give Spot back.
+    applications = ["--pca", "3", "--blend", "--blend-weights", ",".join(["1"] + ["0"] * (len(pairs) - 1))]
     status, stdout, stderr, report = run_cli(
-        model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--transfer-from", "spot"], out)
+        model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--transfer-from", "spot"] + applications,
+        out, display=None if PICTURES else "")
     check_equal(status, 0, "exit status (stderr: %s)" % stderr)
     check(report is not None, "no report.json")
     check_models_ok(report, pairs, "collection")
@@ -338,8 +359,22 @@ def case_collection(tmp):
         check_equal(curves.GetNumberOfLines(), 57, name + ": curves")
         check_straightened(out, name, report["models"][name], flips_allowed=name == "385")
     check_contains(stdout, "straightened", "summary header")
-    check_remeshed(out, report, stdout, [os.path.splitext(os.path.basename(m))[0] for m, _ in pairs], 3)
-    check_transferred(out, report, stdout, [os.path.splitext(os.path.basename(m))[0] for m, _ in pairs[1:]])
+    check_remeshed(out, report, stdout, names, 3)
+    check_transferred(out, report, stdout, names[1:])
+    check_pca(out, report, stdout, names, 3)
+    corners = check_blend_grid(out, report, stdout, names[:3])
+    blend = check_blend(out, report, stdout, dict(zip(names, [1.0] + [0.0] * (len(names) - 1))), False)
+    spot_remesh = points_of(read_vtp(os.path.join(out, "spot.remesh.vtp")))
+    check(max_difference(blend, spot_remesh) <= 1e-9 * size(spot_remesh),
+          "blend.vtp with weights (1, 0, ...) is not Spot's remesh: %g away" % max_difference(blend, spot_remesh))
+    check(max_difference(corners[0], spot_remesh) <= 1e-9 * size(spot_remesh),
+          "the blend grid's corner (1, 0, 0) is not Spot's remesh")
+    pictures = ["mean.png", "pca-modes.png", "blend-grid.png", "blend.png"] + \
+        ["%s.from-spot.png" % name for name in names[1:]]
+    if PICTURES:
+        check_pictures(out, report, stdout, pictures, mode_rows=3, grid_models=3)
+    else:
+        check_pictures_skipped(out, report, stdout, "DISPLAY is not set")
 
 
 def check_transferred(out, report, stdout, targets):
@@ -372,6 +407,290 @@ def check_transferred(out, report, stdout, targets):
                 uv = tcoords.GetTuple2(p)
                 worst = min(abs(uv[0] - s[0]) + abs(uv[1] - s[1]) for s in spot_values[f])
                 check(worst < 1e-4, "%s: landmark %d reads (%g, %g), not one of Spot's" % (name, f, uv[0], uv[1]))
+
+
+def max_difference(a, b):
+    import numpy
+
+    return float(numpy.abs(numpy.asarray(a) - numpy.asarray(b)).max())
+
+
+def size(points):
+    """The largest coordinate, a scale for tolerances."""
+    import numpy
+
+    return float(numpy.abs(points).max())
+
+
+def read_csv(path):
+    """(header, rows) of a CSV file."""
+    check(os.path.isfile(path), "missing output file " + path)
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    check(len(rows) >= 1, path + " is empty")
+    return rows[0], rows[1:]
+
+
+def blocks_of(path, names=None):
+    """The blocks of a .vtm as (name, polydata), checking the names."""
+    blocks = read_vtm(path)
+    found = [(blocks.GetMetaData(i).Get(blocks.NAME()), blocks.GetBlock(i)) for i in range(blocks.GetNumberOfBlocks())]
+    if names is not None:
+        check_equal([name for name, _ in found], names, "block names of " + path)
+    return found
+
+
+def check_pca(out, report, stdout, names, modes):
+    """--pca: the report's figures, mean.vtp (the remesh connectivity, the
+    average of pca-aligned.vtm, one array of one standard deviation per
+    mode, orthogonal), pca-coefficients.csv (each model projected on each
+    mode), pca-variances.csv. With every mode kept, the modes rebuild every
+    aligned model."""
+    import numpy
+
+    pca = report.get("pca")
+    check(pca is not None and "error" not in pca, "pca stage: %r" % pca)
+    m = len(names)
+    check_equal((pca["requested_modes"], pca["modes"], pca["models"]), (modes, modes, names), "pca modes and models")
+    check_equal(pca["files"], ["mean.vtp", "pca-coefficients.csv", "pca-variances.csv", "pca-aligned.vtm"], "pca files")
+    check(pca["alignment_converged"] is True and pca["alignment_iterations"] >= 1, "pca alignment %r" % pca)
+    check(pca["seconds"] > 0, "pca seconds")
+    variances, ratios = pca["variances"], pca["explained_variance_ratios"]
+    check(len(variances) == len(ratios) == len(pca["standard_deviations"]) == modes, "pca figures per mode %r" % pca)
+    check(all(a >= b > 0 for a, b in zip(variances, variances[1:])) and variances[-1] > 0,
+          "variances do not decrease: %r" % variances)
+    check(all(a >= b > 0 for a, b in zip(ratios, ratios[1:])) and 0 < sum(ratios) <= 1 + 1e-6,
+          "explained variance ratios %r" % ratios)
+    check(abs(pca["explained_variance"] - sum(ratios)) < 1e-5, "explained_variance %r" % pca["explained_variance"])
+    check(abs(ratios[0] - variances[0] / pca["total_variance"]) < 1e-5, "ratio of Mode0 against total_variance")
+    if modes == m - 1:
+        check(abs(sum(ratios) - 1) < 1e-5, "all %d modes explain %g of the variance" % (modes, sum(ratios)))
+    check_contains(stdout, "pca: %d mode%s of %d models" % (modes, "" if modes == 1 else "s", m), "summary")
+
+    mean_surface = read_vtp(os.path.join(out, "mean.vtp"))
+    connectivity = read_vtp(os.path.join(out, "remesh_connectivity.vtp"))
+    for mine, theirs, part in zip(cells_of(mean_surface), cells_of(connectivity), ("offsets", "connectivity")):
+        check(numpy.array_equal(mine, theirs), "mean.vtp %s differ from remesh_connectivity.vtp" % part)
+    arrays = mean_surface.GetPointData()
+    check(arrays.GetArray("Mode%d" % modes) is None, "mean.vtp has a Mode%d array for %d modes" % (modes, modes))
+    mode_vectors = []
+    for k in range(modes):
+        array = arrays.GetArray("Mode%d" % k)
+        check(array is not None and array.GetNumberOfComponents() == 3, "mean.vtp has no 3-component Mode%d" % k)
+        mode_vectors.append(points_of_array(array).ravel())
+    mode_vectors = numpy.array(mode_vectors)
+    mean = points_of(mean_surface)
+    scale = size(mean)
+
+    aligned = numpy.array([points_of(block) for _, block in blocks_of(os.path.join(out, "pca-aligned.vtm"), names)])
+    check(max_difference(aligned.mean(axis=0), mean) <= 1e-9 * scale,
+          "mean.vtp is not the average of pca-aligned.vtm: %g away" % max_difference(aligned.mean(axis=0), mean))
+
+    header, rows = read_csv(os.path.join(out, "pca-variances.csv"))
+    check_equal(header, ["Mode", "Variance", "StandardDeviation", "ExplainedVarianceRatio", "CumulativeRatio"],
+                "pca-variances.csv header")
+    check_equal([int(r[0]) for r in rows], list(range(modes)), "pca-variances.csv modes")
+    variance = numpy.array([float(r[1]) for r in rows])
+    deviation = numpy.array([float(r[2]) for r in rows])
+    check(numpy.allclose(variance, variances, rtol=1e-5, atol=0), "pca-variances.csv differs from the report")
+    check(numpy.allclose(deviation ** 2, variance, rtol=1e-12, atol=0), "standard deviations are not sqrt(variance)")
+    check(numpy.allclose(numpy.cumsum([float(r[3]) for r in rows]), [float(r[4]) for r in rows], rtol=1e-12, atol=0),
+          "CumulativeRatio is not the running sum of ExplainedVarianceRatio")
+    # Mode k holds one standard deviation of displacement; modes are orthogonal.
+    gram = mode_vectors @ mode_vectors.T
+    check(numpy.allclose(numpy.diag(gram), variance, rtol=1e-9, atol=0),
+          "squared Mode arrays %r, variances %r" % (numpy.diag(gram), variance))
+    off_diagonal = numpy.abs(gram - numpy.diag(numpy.diag(gram))).max()
+    check(off_diagonal <= 1e-9 * variance[0], "Mode arrays are not orthogonal: %g" % off_diagonal)
+
+    header, rows = read_csv(os.path.join(out, "pca-coefficients.csv"))
+    check_equal(header, ["Model", "Index"] + ["Coefficient%d" % k for k in range(modes)], "pca-coefficients.csv header")
+    check_equal([(r[0], int(r[1])) for r in rows], list(zip(names, range(m))), "pca-coefficients.csv rows")
+    coefficients = numpy.array([[float(v) for v in r[2:]] for r in rows])
+    # A coefficient is the model's offset from the mean along the unit mode.
+    units = mode_vectors / deviation[:, None]
+    projected = (aligned.reshape(m, -1) - mean.ravel()) @ units.T
+    check(max_difference(coefficients, projected) <= 1e-9 * scale * len(mean),
+          "coefficients are not the aligned models projected on the modes: %g away"
+          % max_difference(coefficients, projected))
+    check(numpy.allclose((coefficients ** 2).sum(axis=0) / (m - 1), variance, rtol=1e-9, atol=0),
+          "the coefficients' spread is not the variance")
+    if modes == m - 1:
+        rebuilt = mean.ravel() + coefficients @ units
+        check(max_difference(rebuilt, aligned.reshape(m, -1)) <= 1e-9 * scale,
+              "all modes do not rebuild the aligned models: %g" % max_difference(rebuilt, aligned.reshape(m, -1)))
+    return mean, mode_vectors
+
+
+def points_of_array(array):
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    return vtk_to_numpy(array)
+
+
+def edge_lengths(polydata):
+    import numpy
+
+    triangles = cells_of(polydata)[1].reshape(-1, 3)
+    points = points_of(polydata)
+    return numpy.linalg.norm(points[triangles] - points[numpy.roll(triangles, 1, axis=1)], axis=2)
+
+
+def check_blend_grid(out, report, stdout, names):
+    """--blend: the report, and blend-grid.vtm holding the blends of the
+    first models named by their weights. The blends of one collection are
+    affine in the weights (one alignment for all), so every blend is the
+    weighted sum of the corners; corner 0 is model 0 itself (the frame is
+    model 0's), the other corners are their models moved rigidly.
+    Returns the corners' points."""
+    import numpy
+
+    grid = report.get("blend_grid")
+    check(grid is not None and "error" not in grid, "blend grid stage: %r" % grid)
+    count = len(names)
+    expected = 15 if count == 3 else 5
+    check_equal((grid["models"], grid["blends"], grid["file"]), (names, expected, "blend-grid.vtm"), "blend grid")
+    weights = grid["weights"]
+    check(len(weights) == expected and all(len(w) == count and abs(sum(w) - 1) < 1e-12 and min(w) >= 0
+                                           for w in weights), "blend grid weights %r" % weights)
+    check_equal(len({tuple(w) for w in weights}), expected, "distinct blends in the grid")
+    check_contains(stdout, "blend grid: %d blends of %s" % (expected, ", ".join(names)), "summary")
+    blocks = blocks_of(os.path.join(out, "blend-grid.vtm"))
+    check_equal(len(blocks), expected, "blocks of blend-grid.vtm")
+    points = []
+    for (name, block), w in zip(blocks, weights):
+        written = block.GetFieldData().GetArray("Weights")
+        check(written is not None and [written.GetValue(i) for i in range(count)] == w,
+              "blend-grid.vtm block %s: Weights field differs from the report's %r" % (name, w))
+        check_equal(name, " + ".join("%g %s" % (x, n) for x, n in zip(w, names) if x), "blend-grid.vtm block name")
+        points.append(points_of(block))
+    corners = [points[weights.index([1.0 if i == k else 0.0 for i in range(count)])] for k in range(count)]
+    scale = size(corners[0])
+    for w, p in zip(weights, points):
+        combined = sum(x * c for x, c in zip(w, corners))
+        check(max_difference(p, combined) <= 1e-9 * scale, "blend %r is not the weighted sum of the corners" % w)
+    first = read_vtp(os.path.join(out, names[0] + ".remesh.vtp"))
+    check(max_difference(corners[0], points_of(first)) <= 1e-9 * scale, "corner 0 is not %s's remesh" % names[0])
+    for k in range(1, count):
+        remesh = read_vtp(os.path.join(out, names[k] + ".remesh.vtp"))
+        moved = blocks[weights.index([1.0 if i == k else 0.0 for i in range(count)])][1]
+        difference = numpy.abs(edge_lengths(moved) - edge_lengths(remesh)).max()
+        check(difference <= 1e-9 * scale, "corner %d is not a rigid motion of %s: edges differ by %g"
+              % (k, names[k], difference))
+    return corners
+
+
+def check_blend(out, report, stdout, weights, extrapolating):
+    """--blend-weights: the report, blend.vtp with the remesh connectivity
+    and its Weights and Extrapolating fields. Returns its points."""
+    import numpy
+
+    blend = report.get("blend")
+    check(blend is not None and "error" not in blend, "blend stage: %r" % blend)
+    check_equal((blend["weights"], blend["extrapolating"], blend["file"]), (weights, extrapolating, "blend.vtp"),
+                "blend figures")
+    check_contains(stdout, "blend: weights %s%s" % (", ".join("%g" % w for w in weights.values()),
+                                                    ", extrapolating" if extrapolating else " ("), "summary")
+    surface = read_vtp(os.path.join(out, "blend.vtp"))
+    connectivity = read_vtp(os.path.join(out, "remesh_connectivity.vtp"))
+    for mine, theirs in zip(cells_of(surface), cells_of(connectivity)):
+        check(numpy.array_equal(mine, theirs), "blend.vtp has another connectivity than the remeshes")
+    field = surface.GetFieldData()
+    check_equal([field.GetArray("Weights").GetValue(i) for i in range(len(weights))], list(weights.values()),
+                "blend.vtp Weights")
+    check_equal(int(field.GetArray("Extrapolating").GetValue(0)), int(extrapolating), "blend.vtp Extrapolating")
+    return points_of(surface)
+
+
+def read_png(path):
+    """The picture as an (height, width, 3) array, row 0 at the top."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+
+    check(os.path.isfile(path), "missing picture " + path)
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    check(width > 0 and height > 0, "cannot read the picture " + path)
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, -1)[:, :, :3]
+    return pixels[::-1]
+
+
+def covered(pixels):
+    """The share of pixels that are not the white background."""
+    return 1.0 - (pixels >= 250).all(axis=2).mean()
+
+
+# The pictures' title band, in pixels (render.py).
+TITLE_HEIGHT = 36
+
+
+def cells(pixels, columns, rows):
+    """The picture below its title cut into rows x columns cells:
+    {(column, row): pixels}."""
+    height, width, _ = pixels.shape
+    cell_height, cell_width = (height - TITLE_HEIGHT) // rows, width // columns
+    return {(c, r): pixels[TITLE_HEIGHT + r * cell_height:TITLE_HEIGHT + (r + 1) * cell_height,
+                           c * cell_width:(c + 1) * cell_width]
+            for c in range(columns) for r in range(rows)}
+
+
+def colours(pixels):
+    import numpy
+
+    shown = pixels[~(pixels >= 250).all(axis=2)]
+    return len(numpy.unique(shown // 16, axis=0))
+
+
+def check_pictures(out, report, stdout, files, mode_rows, grid_models):
+    """The pictures were made, each shows what it should where it should:
+    the mean; one shape per cell of the modes' rows; the triangle of
+    blends, with its empty corners; a texture on every transfer."""
+    renders = report.get("renders")
+    check(renders is not None and "skipped" not in renders and "errors" not in renders, "renders %r" % renders)
+    check_equal(renders["files"], files, "pictures")
+    check(renders["seconds"] > 0, "render seconds")
+    check_contains(stdout, "pictures: %d PNGs" % len(files), "summary")
+    mean = read_png(os.path.join(out, "mean.png"))
+    check(covered(mean) > 0.1, "mean.png: the shape covers %.1f%% of the picture" % (100 * covered(mean)))
+    modes = read_png(os.path.join(out, "pca-modes.png"))
+    for (column, row), cell in cells(modes, 3, mode_rows).items():
+        check(covered(cell) > 0.03, "pca-modes.png: cell (%d, %d) is almost empty" % (column, row))
+        # The colour says how far the mode moves a point: several shades.
+        check(colours(cell) > 8, "pca-modes.png: cell (%d, %d) has %d colours" % (column, row, colours(cell)))
+    grid = read_png(os.path.join(out, "blend-grid.png"))
+    if grid_models == 3:
+        layout = cells(grid, 5, 5)
+        for column in range(5):
+            check(covered(layout[(column, 4)]) > 0.03, "blend-grid.png: bottom row cell %d is almost empty" % column)
+        for column in (0, 4):
+            check(covered(layout[(column, 0)]) == 0, "blend-grid.png: top row cell %d is not empty" % column)
+        check(covered(layout[(2, 0)]) > 0.01, "blend-grid.png: no model at the top")
+    check(covered(read_png(os.path.join(out, "blend.png"))) > 0.05, "blend.png is almost empty")
+    for name in files:
+        if ".from-" in name:
+            pixels = read_png(os.path.join(out, name))
+            check(covered(pixels) > 0.1, "%s: the model covers %.1f%% of the picture" % (name, 100 * covered(pixels)))
+            # Spot's hide is white with black patches; a shaded surface of
+            # one colour has next to no black and little white.
+            shown = pixels[~(pixels >= 250).all(axis=2)].max(axis=1)
+            dark, light = (shown < 60).mean(), (shown > 200).mean()
+            check(dark > 0.05 and light > 0.05, "%s: %.1f%% black and %.1f%% white: is Spot's texture applied?"
+                  % (name, 100 * dark, 100 * light))
+    if KEEP_PICTURES:
+        os.makedirs(KEEP_PICTURES, exist_ok=True)
+        for name in files:
+            shutil.copy(os.path.join(out, name), KEEP_PICTURES)
+
+
+def check_pictures_skipped(out, report, stdout, reason):
+    renders = report.get("renders")
+    check(renders is not None and reason in renders.get("skipped", ""), "renders %r, not skipped for %r"
+          % (renders, reason))
+    check_contains(stdout, "pictures: skipped: ", "summary")
+    check_equal([f for f in os.listdir(out) if f.endswith(".png")], [], "pictures made although skipped")
 
 
 def case_given_base_domain(tmp):
@@ -456,6 +775,29 @@ def case_failure_isolation(tmp):
     check(not os.path.exists(os.path.join(out, "collection.vtm")), "collection.vtm written without a base domain")
 
     check_remesh_failure(tmp, good)
+    check_stages_without_a_model(tmp, good, garbage)
+
+
+def check_stages_without_a_model(tmp, good, garbage):
+    """With a model failed, PCA and the blend grid work on the models that
+    were remeshed, two here: one mode, one row of blends. Weights given for
+    every model cannot be used: that stage fails, and with it the run."""
+    pairs = [good[0], (garbage, shrec("381", "vts")), good[1]]
+    out = os.path.join(tmp, "out-stages")
+    status, stdout, stderr, report = run_cli(
+        model_arguments(pairs) + ["--level", "1", "--pca", "1", "--blend", "--blend-weights", "0.5,0,0.5",
+                                  "--no-render"], out)
+    check_equal(status, 1, "exit status with a failed model and a failed blend (stderr: %s)" % stderr)
+    check_equal(report["failed"], ["garbage"], "failed models")
+    check_pca(out, report, stdout, ["381", "384"], 1)
+    check_blend_grid(out, report, stdout, ["381", "384"])
+    blend = report.get("blend", {})
+    check_contains(blend.get("error", ""), "the weights are for every model, and garbage was not remeshed",
+                   "blend error")
+    check_equal(blend.get("weights"), {"381": 0.5, "garbage": 0.0, "384": 0.5}, "blend weights")
+    check_contains(stdout, "blend: FAILED: " + blend["error"], "summary")
+    check(not os.path.exists(os.path.join(out, "blend.vtp")), "blend.vtp written by a failed blend")
+    check_pictures_skipped(out, report, stdout, "--no-render")
 
 
 def cli_module():
@@ -487,7 +829,7 @@ def check_remesh_failure(tmp, pairs):
     out = os.path.join(tmp, "out-remesh-failure")
     cli.straighten_net = lose_base_triangle
     try:
-        status = cli.main(model_arguments(pairs) + ["--level", "1", "--output", out])
+        status = cli.main(model_arguments(pairs) + ["--level", "1", "--pca", "1", "--output", out])
     finally:
         cli.straighten_net = straighten_net
     check_equal(status, 1, "exit status when the remesher fails")
@@ -504,12 +846,16 @@ def check_remesh_failure(tmp, pairs):
         check("remesh" not in model, name + ": remesh figures without a remesh")
     check(not os.path.exists(os.path.join(out, "collection.vtm")), "collection.vtm written by a failed remesh")
     check(not os.path.exists(os.path.join(out, "381.remesh.vtp")), "381.remesh.vtp written by a failed remesh")
+    check_equal(report.get("pca", {}).get("error"), "principal components need at least two remeshed models, not 0",
+                "pca error without remeshes")
+    check(not os.path.exists(os.path.join(out, "mean.vtp")), "mean.vtp written without remeshes")
 
 
 def case_argument_errors(tmp):
     """Usage errors: a non-zero exit status, a one-line reason, no output."""
-    a, b = os.path.join(tmp, "a.off"), os.path.join(tmp, "b.off")
-    la, lb = os.path.join(tmp, "a.vts"), os.path.join(tmp, "b.vts")
+    a, b, c = os.path.join(tmp, "a.off"), os.path.join(tmp, "b.off"), os.path.join(tmp, "c.off")
+    la, lb, lc = os.path.join(tmp, "a.vts"), os.path.join(tmp, "b.vts"), os.path.join(tmp, "c.vts")
+    two = ["--mesh", a, "--landmarks", la, "--mesh", b, "--landmarks", lb]
     cases = [
         (["--mesh", a, "--mesh", b, "--landmarks", la], "2 --mesh but 1 --landmarks"),
         (["--mesh", a, "--landmarks", la, "--landmarks", lb], "1 --mesh but 2 --landmarks"),
@@ -527,6 +873,21 @@ def case_argument_errors(tmp):
          "--adaptive-tolerance -0.5: give 0 (uniform) or a positive fraction"),
         (["--mesh", a, "--landmarks", la, "--adaptive-tolerance", "nan"], "--adaptive-tolerance nan: give 0"),
         (["--mesh", a, "--landmarks", la, "--transfer-from", "b"], "--transfer-from b: no model is named so"),
+        (["--mesh", a, "--landmarks", la, "--pca", "1"], "--pca 1: principal components need at least two models"),
+        (two + ["--pca", "0"], "--pca 0: give a number of modes from 1 to 1 (2 models vary in at most 1 direction)"),
+        (two + ["--pca", "2"], "--pca 2: give a number of modes from 1 to 1"),
+        (two + ["--mesh", c, "--landmarks", lc, "--pca", "3"], "--pca 3: give a number of modes from 1 to 2 (3 models"),
+        (two + ["--pca", "-1"], "--pca -1: give a number of modes from 1 to 1"),
+        (two + ["--pca", "all"], "argument --pca: invalid int value: 'all'"),
+        (["--mesh", a, "--landmarks", la, "--blend"], "--blend: blending needs at least two models"),
+        (two + ["--blend-weights", "0.5,0.6"],
+         "--blend-weights 0.5,0.6: the weights must sum to 1 (an affine combination), but they sum to 1.1"),
+        (two + ["--blend-weights", "1"], "--blend-weights 1: give one weight per model: 1 weight for 2 models"),
+        (two + ["--blend-weights", "0.5", "0.5", "0"], "give one weight per model: 3 weights for 2 models"),
+        (two + ["--blend-weights", "0.5,half"], "--blend-weights 0.5,half: 'half' is not a number"),
+        (two + ["--blend-weights", "nan,1"], "'nan' is not a finite number"),
+        (two + ["--blend-weights"], "argument --blend-weights: expected at least one argument"),
+        (two + ["--view-up", "up"], "--view-up up: give x, y or z with an optional sign"),
     ]
     for arguments, message in cases:
         out = os.path.join(tmp, "out")
@@ -583,7 +944,10 @@ def case_shipped_examples(tmp):
     for mesh, landmarks in pairs:
         arguments += ["--mesh", os.path.join(examples, mesh), "--landmarks", os.path.join(examples, landmarks)]
     out = os.path.join(tmp, "out")
-    status, stdout, stderr, report = run_cli(arguments, out)
+    # Every mode of three models; the weights separated by spaces, one
+    # negative; no display, so no pictures.
+    applications = ["--pca", "2", "--blend", "--blend-weights", "1.5", "-0.5", "0"]
+    status, stdout, stderr, report = run_cli(arguments + applications, out, display="")
     check_equal(status, 0, "exit status (stderr: %s)" % stderr)
     check_equal(report["failed"], [], "failed models")
     for name, vertices in (("blob", 642), ("capsule", 2562), ("peanut", 642)):
@@ -594,7 +958,26 @@ def case_shipped_examples(tmp):
     for name in ("blob", "capsule", "peanut"):
         check(report["models"][name]["net"]["valid"] is True, name + ": net not valid")
         check_straightened(out, name, report["models"][name], landmarks=6)
-    check_remeshed(out, report, stdout, ["blob", "capsule", "peanut"], 4, landmarks=6)
+    names = ["blob", "capsule", "peanut"]
+    check_remeshed(out, report, stdout, names, 4, landmarks=6)
+    check_pca(out, report, stdout, names, 2)
+    corners = check_blend_grid(out, report, stdout, names)
+    # The grid blends the same three models: the same alignment.
+    blend = check_blend(out, report, stdout, {"blob": 1.5, "capsule": -0.5, "peanut": 0.0}, True)
+    expected = 1.5 * corners[0] - 0.5 * corners[1]
+    check(max_difference(blend, expected) <= 1e-9 * size(expected),
+          "blend.vtp is not 1.5 blob - 0.5 capsule: %g away" % max_difference(blend, expected))
+    check_pictures_skipped(out, report, stdout, "no X display (DISPLAY is not set)")
+
+    # A DISPLAY naming no X server: VTK would abort the process, so the
+    # command must find out first. --no-render asks for no pictures at all.
+    for extra, reason in (([], "cannot open the X display :54321"), (["--no-render"], "--no-render")):
+        out = os.path.join(tmp, "out-display" + "".join(extra))
+        status, stdout, stderr, report = run_cli(arguments + ["--level", "1", "--pca", "1"] + extra, out,
+                                                 display=":54321")
+        check_equal(status, 0, "%s: exit status (stderr: %s)" % (reason, stderr))
+        check_pca(out, report, stdout, names, 1)
+        check_pictures_skipped(out, report, stdout, reason)
 
 
 CASES = {
@@ -608,14 +991,18 @@ CASES = {
 
 
 def main():
-    global COMMAND, DATA
+    global COMMAND, DATA, PICTURES, KEEP_PICTURES
     parser = argparse.ArgumentParser()
     parser.add_argument("--command", required=True)
     parser.add_argument("--data")
+    parser.add_argument("--pictures", action="store_true", help="a display is there: the pictures must be made")
+    parser.add_argument("--keep-pictures", metavar="DIR", help="copy the checked pictures to DIR")
     parser.add_argument("case", choices=sorted(CASES))
     args = parser.parse_args()
     COMMAND = args.command
     DATA = args.data
+    PICTURES = args.pictures
+    KEEP_PICTURES = args.keep_pictures
     check(os.access(COMMAND, os.X_OK), "%s is not an executable" % COMMAND)
     if args.case != "argument-errors":
         check(DATA and os.path.isdir(DATA), "this case needs --data")
