@@ -736,8 +736,8 @@ def parse_arguments(argv):
         if count < 2:
             parser.error("--pca %d: principal components need at least two models" % args.pca)
         if not 1 <= args.pca <= count - 1:
-            parser.error("--pca %d: give a number of modes from 1 to %d (%d models vary in at most %d directions)"
-                         % (args.pca, count - 1, count, count - 1))
+            parser.error("--pca %d: give a number of modes from 1 to %d (%d models vary in at most %d direction%s)"
+                         % (args.pca, count - 1, count, count - 1, "" if count == 2 else "s"))
     if args.blend and count < 2:
         parser.error("--blend: blending needs at least two models")
     if args.blend_weights is not None:
