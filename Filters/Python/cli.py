@@ -712,14 +712,13 @@ def parse_arguments(argv):
                         "(blend-grid.vtm, blend-grid.png)")
     parser.add_argument("--blend-weights", nargs="+", metavar="W",
                         help="blend every model with these weights, one per --mesh in order, summing to 1, "
-                        "separated by commas or spaces; a weight outside [0, 1] extrapolates (blend.vtp, blend.png). "
-                        "Write a leading negative weight as --blend-weights=-0.5,1.5")
+                        "separated by commas or spaces; a weight outside [0, 1] extrapolates (blend.vtp, blend.png)")
     parser.add_argument("--no-render", action="store_true",
                         help="make no PNG pictures (they need an X display; xvfb-run -a gives one)")
     parser.add_argument("--view-up", default="+y", metavar="AXIS",
                         help="the models' up axis for the pictures: +y (default), -y, +z, -z, +x or -x")
     parser.add_argument("--output", required=True, help="output folder")
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_attach_negative_weights(argv))
     if not args.mesh:
         parser.error("give at least one --mesh with its --landmarks")
     if len(args.mesh) != len(args.landmarks):
@@ -760,6 +759,18 @@ def parse_arguments(argv):
     if os.path.exists(args.output) and not os.path.isdir(args.output):
         parser.error("--output %s exists and is not a folder" % args.output)
     return args
+
+
+def _attach_negative_weights(argv):
+    """argparse takes '--blend-weights -0.5,1.5' for two options; with the
+    weights attached by '=' they are the option's value."""
+    fixed = []
+    for word in argv:
+        if fixed and fixed[-1] == "--blend-weights" and word.startswith("-") and "," in word:
+            fixed[-1] += "=" + word
+        else:
+            fixed.append(word)
+    return fixed
 
 
 def parse_weights(parser, words, count):

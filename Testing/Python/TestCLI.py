@@ -944,9 +944,9 @@ def case_shipped_examples(tmp):
     for mesh, landmarks in pairs:
         arguments += ["--mesh", os.path.join(examples, mesh), "--landmarks", os.path.join(examples, landmarks)]
     out = os.path.join(tmp, "out")
-    # Every mode of three models; the weights separated by spaces, one
-    # negative; no display, so no pictures.
-    applications = ["--pca", "2", "--blend", "--blend-weights", "1.5", "-0.5", "0"]
+    # Every mode of three models; the weights led by a negative one, which
+    # argparse alone would take for an option; no display, so no pictures.
+    applications = ["--pca", "2", "--blend", "--blend-weights", "-0.5,1.5,0"]
     status, stdout, stderr, report = run_cli(arguments + applications, out, display="")
     check_equal(status, 0, "exit status (stderr: %s)" % stderr)
     check_equal(report["failed"], [], "failed models")
@@ -963,20 +963,23 @@ def case_shipped_examples(tmp):
     check_pca(out, report, stdout, names, 2)
     corners = check_blend_grid(out, report, stdout, names)
     # The grid blends the same three models: the same alignment.
-    blend = check_blend(out, report, stdout, {"blob": 1.5, "capsule": -0.5, "peanut": 0.0}, True)
-    expected = 1.5 * corners[0] - 0.5 * corners[1]
+    blend = check_blend(out, report, stdout, {"blob": -0.5, "capsule": 1.5, "peanut": 0.0}, True)
+    expected = -0.5 * corners[0] + 1.5 * corners[1]
     check(max_difference(blend, expected) <= 1e-9 * size(expected),
-          "blend.vtp is not 1.5 blob - 0.5 capsule: %g away" % max_difference(blend, expected))
+          "blend.vtp is not 1.5 capsule - 0.5 blob: %g away" % max_difference(blend, expected))
     check_pictures_skipped(out, report, stdout, "no X display (DISPLAY is not set)")
 
     # A DISPLAY naming no X server: VTK would abort the process, so the
     # command must find out first. --no-render asks for no pictures at all.
+    # Weights may also be separated by spaces.
     for extra, reason in (([], "cannot open the X display :54321"), (["--no-render"], "--no-render")):
         out = os.path.join(tmp, "out-display" + "".join(extra))
-        status, stdout, stderr, report = run_cli(arguments + ["--level", "1", "--pca", "1"] + extra, out,
-                                                 display=":54321")
+        status, stdout, stderr, report = run_cli(
+            arguments + ["--level", "1", "--pca", "1", "--blend-weights", "0.25", "0.25", "0.5"] + extra, out,
+            display=":54321")
         check_equal(status, 0, "%s: exit status (stderr: %s)" % (reason, stderr))
         check_pca(out, report, stdout, names, 1)
+        check_blend(out, report, stdout, {"blob": 0.25, "capsule": 0.25, "peanut": 0.5}, False)
         check_pictures_skipped(out, report, stdout, reason)
 
 
