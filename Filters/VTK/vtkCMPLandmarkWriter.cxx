@@ -1,0 +1,63 @@
+#include "vtkCMPLandmarkWriter.h"
+
+#include "Landmarks.h"
+#include "vtkCMPPolyDataBridge.h"
+
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(vtkCMPLandmarkWriter);
+
+int vtkCMPLandmarkWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkCMPLandmarkWriter::WriteData()
+{
+  auto* surface = vtkPolyData::SafeDownCast(this->GetInput());
+  if (this->FileName.empty())
+  {
+    vtkErrorMacro("no file name set");
+    return;
+  }
+  vtkDataArray* featureIds = surface ? surface->GetPointData()->GetArray(cmp::bridge::kFeatureIdArray) : nullptr;
+  if (!featureIds)
+  {
+    vtkErrorMacro("the surface has no FeatureId point array: mark its landmarks first");
+    return;
+  }
+  cmp::TriangleMesh mesh;
+  if (cmp::Status s = cmp::bridge::toTriangleMesh(surface, mesh); !s.ok())
+  {
+    vtkErrorMacro(<< s.message());
+    return;
+  }
+  std::vector<int> values(featureIds->GetNumberOfTuples());
+  for (vtkIdType v = 0; v < featureIds->GetNumberOfTuples(); ++v)
+    values[v] = static_cast<int>(featureIds->GetComponent(v, 0));
+  std::vector<int> fileToMeshPoint;
+  if (vtkDataArray* map = surface->GetFieldData()->GetArray(cmp::bridge::kFileToMeshPointArray))
+  {
+    fileToMeshPoint.resize(map->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < map->GetNumberOfTuples(); ++i)
+      fileToMeshPoint[i] = static_cast<int>(map->GetComponent(i, 0));
+  }
+  cmp::LandmarkList landmarks;
+  cmp::Status status = cmp::landmarksFromFeatureIds(values, landmarks);
+  if (status.ok())
+    status = cmp::writeLandmarkFile(this->FileName, landmarks, mesh, fileToMeshPoint);
+  if (!status.ok())
+    vtkErrorMacro(<< status.message());
+}
+
+void vtkCMPLandmarkWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+}
