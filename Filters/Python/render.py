@@ -40,6 +40,7 @@ TEXT = (0.1, 0.1, 0.1)
 # The surface correspondence arrays every remesh carries: nothing to look at.
 CORRESPONDENCE_ARRAYS = {"FeatureId", "BaseTriangle", "BaseCoordinates", "UnsplitPointId", "Normals", "TCoords"}
 TEXTURE_SIZE = 1024
+TITLE_HEIGHT = 36  # pixels above the panels when a sheet has a title
 AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
 
 
@@ -103,7 +104,7 @@ class View:
         a /= numpy.linalg.norm(a)
         b = numpy.cross(up, a)
         flat = (points - points.mean(axis=0)) @ numpy.column_stack([a, b])
-        values, vectors = numpy.linalg.eigh(flat.T @ flat)
+        _, vectors = numpy.linalg.eigh(flat.T @ flat)
         direction = vectors[0, 0] * a + vectors[1, 0] * b
         # The camera stays on one side whatever sign the eigenvector came with.
         if direction[numpy.argmax(numpy.abs(direction))] < 0:
@@ -114,7 +115,7 @@ class View:
 
     def extent(self, polydata):
         """(centre, width, height) of the surface seen in this view."""
-        points = vtk_to_numpy(polydata.GetPoints().GetData()).astype(float)
+        points = points_of(polydata)
         horizontal, vertical, depth = points @ self.right, points @ self.up, points @ self.direction
         low = numpy.array([horizontal.min(), vertical.min(), depth.min()])
         high = numpy.array([horizontal.max(), vertical.max(), depth.max()])
@@ -152,7 +153,7 @@ class Sheet:
 
     def write(self, path, view, margin=1.05):
         width, height = self.columns * self.cell_size[0], self.rows * self.cell_size[1]
-        title_height = 36 if self.title else 0
+        title_height = TITLE_HEIGHT if self.title else 0
         window = vtkRenderWindow()
         window.SetOffScreenRendering(1)
         window.SetMultiSamples(8)
@@ -180,17 +181,15 @@ class Sheet:
             renderer.AddActor(_actor(panel))
             if panel.label:
                 renderer.AddActor2D(_text(panel.label, 15, self.cell_size[0] / 2, 8, centred=True))
+            # The label sits below the shape: the camera looks a little
+            # lower, which lifts the shape into the room left above it.
+            focus = centre - (label_room - 1.0) * scale / label_room * view.up if panel.label else centre
             camera = renderer.GetActiveCamera()
             camera.ParallelProjectionOn()
-            camera.SetFocalPoint(*centre)
-            camera.SetPosition(*(centre + 10.0 * scale * view.direction))
+            camera.SetFocalPoint(*focus)
+            camera.SetPosition(*(focus + 10.0 * scale * view.direction))
             camera.SetViewUp(*view.up)
             camera.SetParallelScale(scale)
-            # The label sits below the shape: shift the shape up to make room.
-            if panel.label:
-                shift = (label_room - 1.0) * scale / label_room
-                camera.SetFocalPoint(*(centre - shift * view.up))
-                camera.SetPosition(*(centre - shift * view.up + 10.0 * scale * view.direction))
             renderer.ResetCameraClippingRange()
             vtkLightKit().AddLightsToRenderer(renderer)
             window.AddRenderer(renderer)
@@ -204,7 +203,7 @@ class Sheet:
             writer.SetFileName(path)
             writer.SetInputConnection(grab.GetOutputPort())
             writer.Write()
-            if writer.GetErrorCode() or not os.path.isfile(path):
+            if writer.GetErrorCode():
                 raise RenderError("cannot write '%s'" % path)
         finally:
             window.Finalize()

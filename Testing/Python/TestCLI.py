@@ -373,6 +373,7 @@ def case_collection(tmp):
         ["%s.from-spot.png" % name for name in names[1:]]
     if PICTURES:
         check_pictures(out, report, stdout, pictures, mode_rows=3, grid_models=3)
+        check_texture_fallbacks(tmp)
     else:
         check_pictures_skipped(out, report, stdout, "DISPLAY is not set")
 
@@ -623,7 +624,7 @@ def covered(pixels):
     return 1.0 - (pixels >= 250).all(axis=2).mean()
 
 
-# The pictures' title band, in pixels (render.py).
+# The pictures' title band, in pixels (render.TITLE_HEIGHT).
 TITLE_HEIGHT = 36
 
 
@@ -683,6 +684,41 @@ def check_pictures(out, report, stdout, files, mode_rows, grid_models):
         os.makedirs(KEEP_PICTURES, exist_ok=True)
         for name in files:
             shutil.copy(os.path.join(out, name), KEEP_PICTURES)
+
+
+def check_texture_fallbacks(tmp):
+    """Where a source's texture image is looked for (STEM_texture.png, else
+    the map_Kd of the OBJ's materials), and what a transfer picture shows
+    without one: the texture coordinates as a checkerboard."""
+    render = cli_module().render
+    spot, landmarks = spot_paths()
+    check_equal(render.find_texture_image(spot), os.path.join(DATA, "spot", "spot_texture.png"), "Spot's texture")
+    folder = os.path.join(tmp, "textures")
+    os.makedirs(folder)
+    with open(spot) as f:
+        spot_text = f.read()
+    cow = write_text(os.path.join(folder, "cow.obj"), "mtllib cow.mtl\n" + spot_text)
+    write_text(os.path.join(folder, "cow.mtl"), "newmtl hide\nKd 1 1 1\nmap_Kd -s 1 1 1 hide.png\n")
+    check_equal(render.find_texture_image(cow), None, "texture of an OBJ whose map_Kd image is missing")
+    write_text(os.path.join(folder, "hide.png"), "")
+    check_equal(render.find_texture_image(cow), os.path.join(folder, "hide.png"), "texture named by map_Kd")
+    check_equal(render.find_texture_image(shrec("381", "off")), None, "texture of an OFF without one")
+
+    # The cow is Spot without a texture image: a checkerboard, and a note.
+    os.remove(os.path.join(folder, "hide.png"))
+    pairs = [(cow, landmarks), (shrec("381", "off"), shrec("381", "vts")), (shrec("382", "off"), shrec("382", "vts"))]
+    out = os.path.join(tmp, "out-checkerboard")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--level", "2", "--transfer-from", "cow"], out)
+    check_equal(status, 0, "checkerboard run: exit status (stderr: %s)" % stderr)
+    renders = report.get("renders", {})
+    check_equal(renders.get("files"), ["381.from-cow.png", "382.from-cow.png"], "checkerboard run: pictures")
+    check("checkerboard" in " ".join(renders.get("notes", [])), "no note on the checkerboard: %r" % renders)
+    check_contains(stdout, "note: no texture image beside " + cow, "summary")
+    for name in renders["files"]:
+        pixels = read_png(os.path.join(out, name)).astype(int)
+        # The checkerboard's dark squares are blue; the plain surface has none.
+        blue = ((pixels[:, :, 2] > pixels[:, :, 0] + 40) & (pixels[:, :, 2] > 90)).mean()
+        check(blue > 0.05 and covered(pixels) > 0.1, "%s: %.1f%% blue: is the checkerboard applied?" % (name, 100 * blue))
 
 
 def check_pictures_skipped(out, report, stdout, reason):
