@@ -41,13 +41,7 @@ void vtkCMPLandmarkWriter::WriteData()
   std::vector<int> values(featureIds->GetNumberOfTuples());
   for (vtkIdType v = 0; v < featureIds->GetNumberOfTuples(); ++v)
     values[v] = static_cast<int>(featureIds->GetComponent(v, 0));
-  std::vector<int> fileToMeshPoint;
-  if (vtkDataArray* map = surface->GetFieldData()->GetArray(cmp::bridge::kFileToMeshPointArray))
-  {
-    fileToMeshPoint.resize(map->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < map->GetNumberOfTuples(); ++i)
-      fileToMeshPoint[i] = static_cast<int>(map->GetComponent(i, 0));
-  }
+  const std::vector<int> fileToMeshPoint = cmp::bridge::fileToMeshPointMap(surface);
   cmp::LandmarkList landmarks;
   cmp::Status status = cmp::landmarksFromFeatureIds(values, landmarks);
   if (status.ok())

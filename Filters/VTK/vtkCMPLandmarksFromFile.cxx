@@ -28,13 +28,7 @@ int vtkCMPLandmarksFromFile::RequestData(
     vtkErrorMacro(<< s.message());
     return 0;
   }
-  std::vector<int> fileToMeshPoint;
-  if (vtkDataArray* map = input->GetFieldData()->GetArray(cmp::bridge::kFileToMeshPointArray))
-  {
-    fileToMeshPoint.resize(map->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < map->GetNumberOfTuples(); ++i)
-      fileToMeshPoint[i] = static_cast<int>(map->GetComponent(i, 0));
-  }
+  const std::vector<int> fileToMeshPoint = cmp::bridge::fileToMeshPointMap(input);
   cmp::LandmarkList landmarks;
   cmp::Status status = cmp::readLandmarkFile(this->LandmarkFile, mesh, fileToMeshPoint, landmarks);
   if (status.ok())
@@ -45,13 +39,7 @@ int vtkCMPLandmarksFromFile::RequestData(
     return 0;
   }
   output->ShallowCopy(input);
-  auto featureIds = vtkSmartPointer<vtkIntArray>::New();
-  featureIds->SetName(cmp::bridge::kFeatureIdArray);
-  const std::vector<int> values = cmp::featureIdsOf(landmarks, mesh.vertexCount());
-  featureIds->SetNumberOfValues(mesh.vertexCount());
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    featureIds->SetValue(v, values[v]);
-  output->GetPointData()->AddArray(featureIds);
+  cmp::bridge::setFeatureIds(output, landmarks);
   return 1;
 }
 

@@ -131,13 +131,7 @@ int vtkCMPLandmarksFromSelection::RequestData(
     return 0;
   }
   output->ShallowCopy(input);
-  auto featureIds = vtkSmartPointer<vtkIntArray>::New();
-  featureIds->SetName(cmp::bridge::kFeatureIdArray);
-  const std::vector<int> values = cmp::featureIdsOf(landmarks, mesh.vertexCount());
-  featureIds->SetNumberOfValues(mesh.vertexCount());
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    featureIds->SetValue(v, values[v]);
-  output->GetPointData()->AddArray(featureIds);
+  cmp::bridge::setFeatureIds(output, landmarks);
   return 1;
 }
 

@@ -198,6 +198,30 @@ vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain&
   return output;
 }
 
+void setFeatureIds(vtkPolyData* surface, const LandmarkList& landmarks)
+{
+  const auto vertices = static_cast<int>(surface->GetNumberOfPoints());
+  auto featureIds = vtkSmartPointer<vtkIntArray>::New();
+  featureIds->SetName(kFeatureIdArray);
+  const std::vector<int> values = featureIdsOf(landmarks, vertices);
+  featureIds->SetNumberOfValues(vertices);
+  for (int v = 0; v < vertices; ++v)
+    featureIds->SetValue(v, values[v]);
+  surface->GetPointData()->AddArray(featureIds);
+}
+
+std::vector<int> fileToMeshPointMap(vtkPolyData* surface)
+{
+  std::vector<int> map;
+  if (vtkDataArray* array = surface->GetFieldData()->GetArray(kFileToMeshPointArray))
+  {
+    map.resize(array->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+      map[i] = static_cast<int>(array->GetComponent(i, 0));
+  }
+  return map;
+}
+
 void setFieldValue(vtkFieldData* fieldData, const char* name, double value)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();

@@ -58,6 +58,14 @@ vtkSmartPointer<vtkPolyData> toPolyData(const BaseDomain& domain);
 ///        curve's first and last point).
 vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain);
 
+/// \brief Adds (or replaces) the point array `FeatureId` of `surface`
+///        (int: -1, or the feature index at each landmark vertex).
+void setFeatureIds(vtkPolyData* surface, const LandmarkList& landmarks);
+
+/// \brief The file-to-mesh point map the surface reader leaves in field
+///        array `FileToMeshPointId` (empty when the reader welded nothing).
+std::vector<int> fileToMeshPointMap(vtkPolyData* surface);
+
 /// \brief Adds (or replaces) a one-value double array in field data.
 void setFieldValue(vtkFieldData* fieldData, const char* name, double value);
 

@@ -9,17 +9,21 @@
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
+#include <vtkInformation.h>
 #include <vtkIntArray.h>
 #include <vtkMassProperties.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 namespace cmp::test
@@ -138,6 +142,20 @@ vtkSmartPointer<vtkPolyData> tetrahedronBaseDomain(const std::string& fileName)
   EXPECT_TRUE(run(reader).succeeded);
   setFeatureIds(reader->GetOutput(), { 0, 1, 2, 3 });
   return reader->GetOutput();
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> parameterizedExamples(vtkPolyData* l0)
+{
+  const std::string folder = examplesDir() + "/";
+  auto models = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  const std::vector<std::array<std::string, 3>> files = { { "blob", "blob.off", "blob.vts" },
+    { "capsule", "capsule.obj", "capsule.pinned" }, { "peanut", "peanut.off", "peanut.csv" } };
+  for (unsigned m = 0; m < files.size(); ++m)
+  {
+    models->SetBlock(m, parameterized(readLandmarked(folder + files[m][1], folder + files[m][2]), l0));
+    models->GetMetaData(m)->Set(vtkCompositeDataSet::NAME(), files[m][0].c_str());
+  }
+  return models;
 }
 
 } // namespace cmp::test

@@ -13,6 +13,8 @@
 class vtkAlgorithm;
 class vtkPolyData;
 
+class vtkMultiBlockDataSet;
+
 namespace cmp::test
 {
 
@@ -61,5 +63,10 @@ vtkSmartPointer<vtkPolyData> tetrahedronBaseDomain(const std::string& fileName);
 ///        if either fails): the input of the filters that read a
 ///        parameterization.
 vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0);
+
+/// \brief The three shipped examples (blob, capsule, peanut) traced and
+///        straightened against `l0`, as one multiblock with blocks named
+///        after them: the input of a Semi-Regular Remesher collection.
+vtkSmartPointer<vtkMultiBlockDataSet> parameterizedExamples(vtkPolyData* l0);
 
 } // namespace cmp::test

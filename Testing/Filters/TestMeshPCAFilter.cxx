@@ -35,16 +35,8 @@ protected:
   static void SetUpTestSuite()
   {
     const std::string folder = examplesDir() + "/";
-    vtkSmartPointer<vtkPolyData> blob = readLandmarked(folder + "blob.off", folder + "blob.vts");
-    vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(blob);
-    vtkNew<vtkMultiBlockDataSet> models;
-    const std::vector<std::array<std::string, 3>> files = { { "blob", "blob.off", "blob.vts" },
-      { "capsule", "capsule.obj", "capsule.pinned" }, { "peanut", "peanut.off", "peanut.csv" } };
-    for (unsigned m = 0; m < files.size(); ++m)
-    {
-      models->SetBlock(m, parameterized(readLandmarked(folder + files[m][1], folder + files[m][2]), l0));
-      models->GetMetaData(m)->Set(vtkCompositeDataSet::NAME(), files[m][0].c_str());
-    }
+    vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(readLandmarked(folder + "blob.off", folder + "blob.vts"));
+    vtkSmartPointer<vtkMultiBlockDataSet> models = parameterizedExamples(l0);
     remeshes_ = remesh(models, l0, 3);
     coarse_ = remesh(models, l0, 2);
   }

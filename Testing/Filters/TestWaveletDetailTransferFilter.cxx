@@ -94,16 +94,8 @@ protected:
   static void SetUpTestSuite()
   {
     const std::string folder = examplesDir() + "/";
-    vtkSmartPointer<vtkPolyData> blob = readLandmarked(folder + "blob.off", folder + "blob.vts");
-    l0_ = baseDomainOf(blob);
-    models_ = vtkSmartPointer<vtkMultiBlockDataSet>::New();
-    const std::vector<std::array<std::string, 3>> files = { { "blob", "blob.off", "blob.vts" },
-      { "capsule", "capsule.obj", "capsule.pinned" }, { "peanut", "peanut.off", "peanut.csv" } };
-    for (unsigned m = 0; m < files.size(); ++m)
-    {
-      models_->SetBlock(m, parameterized(readLandmarked(folder + files[m][1], folder + files[m][2]), l0_));
-      models_->GetMetaData(m)->Set(vtkCompositeDataSet::NAME(), files[m][0].c_str());
-    }
+    l0_ = baseDomainOf(readLandmarked(folder + "blob.off", folder + "blob.vts"));
+    models_ = parameterizedExamples(l0_);
     remeshes_ = remesh(models_, l0_, 3);
   }
   static void TearDownTestSuite() { l0_ = nullptr, models_ = remeshes_ = nullptr; }

@@ -16,7 +16,7 @@ from paraview import servermanager
 from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-from cmp_test_support import check, check_equal, landmarked_shrec, plugin_test_setup
+from cmp_test_support import check, check_equal, landmarked_shrec, plugin_test_setup, screenshot_pixels, white_view
 from cmp_test_support import required_field as field
 
 MODELS = ["381", "383", "387"]
@@ -89,14 +89,7 @@ def check_detail_transfer(names, remesher, remeshes):
 def render_figure13(names, remesher, transfer, image):
     """The coarse model, the detail model and the result side by side;
     returns the image as an (h, w, 3) array."""
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [900, 300]
-    view.OrientationAxesVisibility = 0
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
+    view = white_view(900, 300)
     # A blend with one weight 1 and no alignment is that model (checked above).
     shapes = [names["ShapeBlend"](Input=remesher, Alignment="None", Weights=[1, 0, 0]),
               names["ShapeBlend"](Input=remesher, Alignment="None", Weights=[0, 0, 1]), transfer]
@@ -118,14 +111,7 @@ def render_figure13(names, remesher, transfer, image):
     view.CameraParallelProjection = 1
     view.CameraParallelScale = 1.1 * (2 * step + bounds[1] - bounds[0]) / 6
     simple.Render(view)
-    simple.SaveScreenshot(image, view, ImageResolution=[900, 300])
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    reader = vtkPNGReader()
-    reader.SetFileName(image)
-    reader.Update()
-    data = reader.GetOutput()
-    width, height, _ = data.GetDimensions()
-    return vtk_to_numpy(data.GetPointData().GetScalars()).reshape(height, width, -1)[:, :, :3]
+    return screenshot_pixels(view, image)
 
 
 def main():

@@ -16,7 +16,7 @@ from paraview import servermanager
 from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-from cmp_test_support import check, check_equal, landmarked_shrec, load_plugin_proxies
+from cmp_test_support import check, check_equal, landmarked_shrec, load_plugin_proxies, screenshot_pixels, white_view
 from cmp_test_support import required_field as field
 
 
@@ -34,14 +34,7 @@ def corner_values_at_landmarks(surface):
 def textured_view(transfer, texture_file, image):
     """Renders the transfer's output with the texture and returns the image
     as an (h, w, 3) array."""
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [640, 480]
-    view.OrientationAxesVisibility = 0
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
+    view = white_view(640, 480)
     display = simple.Show(transfer, view)
     display.ColorArrayName = [None, ""]
     display.DiffuseColor = [1, 1, 1]
@@ -51,15 +44,7 @@ def textured_view(transfer, texture_file, image):
     simple.ResetCamera(view)
     view.GetActiveCamera().Dolly(1.5)
     simple.Render(view)
-    simple.SaveScreenshot(image, view, ImageResolution=[640, 480])
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    reader = vtkPNGReader()
-    reader.SetFileName(image)
-    reader.Update()
-    data = reader.GetOutput()
-    width, height, _ = data.GetDimensions()
-    pixels = vtk_to_numpy(data.GetPointData().GetScalars())
-    return pixels.reshape(height, width, -1)[:, :, :3]
+    return screenshot_pixels(view, image)
 
 
 def main():

@@ -214,6 +214,36 @@ def required_field(dataset, name):
     return value
 
 
+def white_view(width, height):
+    """A render view with a white background and no orientation axes, for
+    pictures whose covered pixels a test counts."""
+    from paraview import simple
+    view = simple.CreateView("RenderView")
+    view.ViewSize = [width, height]
+    view.OrientationAxesVisibility = 0
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    return view
+
+
+def screenshot_pixels(view, image):
+    """Saves `view` to the PNG `image` and returns it as an (h, w, 3) array."""
+    from paraview import simple
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    width, height = view.ViewSize
+    simple.SaveScreenshot(image, view, ImageResolution=[width, height])
+    reader = vtkPNGReader()
+    reader.SetFileName(image)
+    reader.Update()
+    data = reader.GetOutput()
+    columns, rows, _ = data.GetDimensions()
+    return vtk_to_numpy(data.GetPointData().GetScalars()).reshape(rows, columns, -1)[:, :, :3]
+
+
 def load_plugin_proxies(plugin):
     """Loads the plugin and returns the namespace its proxy functions were
     added to (paraview.simple's)."""
