@@ -15,7 +15,7 @@ PNG pictures of these.
 Usage:
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
-                    [--adaptive-tolerance T] [--transfer-from NAME] [--pca K]
+                    [--adaptive-tolerance T] [--transfer-from NAME] [--details-from NAME] [--pca K]
                     [--blend] [--blend-weights W0,W1,...] [--no-render] [--view-up AXIS]
                     --output DIR
 
@@ -328,6 +328,41 @@ def run_transfer(source_name, ready, remeshes, domain, output_folder):
     print("transferring %s's attributes onto the other remeshes" % source_name, flush=True)
     try:
         return transfer_attributes(source, remeshes, domain, output_folder)
+    except StageError as error:
+        return {"source": source_name, "error": str(error)}
+
+
+def transfer_details(source_name, remeshes, output_folder):
+    """WaveletDetailTransfer with every other remesh's coarse shape and
+    `source_name`'s details (above level 2, the filter's default): writes
+    TARGET.details-from-SOURCE.vtp and returns the stage's figures. Raises
+    StageError if the filter fails or a file cannot be written."""
+    names = [remeshes.GetMetaData(i).Get(vtkCompositeDataSet.NAME()) for i in range(remeshes.GetNumberOfBlocks())]
+    transfer = cmp.vtkCMPWaveletDetailTransfer()
+    transfer.SetInputData(remeshes)
+    transfer.SetDetailModel(names.index(source_name))
+    figures = {"source": source_name, "last_coarse_level": transfer.GetLastCoarseLevel(), "targets": {}}
+    start = time.perf_counter()
+    for index, name in enumerate(names):
+        if name == source_name:
+            continue
+        transfer.SetCoarseModel(index)
+        result = _run(transfer)
+        path = os.path.join(output_folder, "%s.details-from-%s.vtp" % (name, source_name))
+        write_polydata(result, path)
+        figures["targets"][name] = {"file": os.path.basename(path),
+                                    "seconds": round(_field_reader(result)("TransferSeconds"), 4)}
+    figures["seconds"] = round(time.perf_counter() - start, 4)
+    return figures
+
+
+def run_details(source_name, ready, remeshes, output_folder):
+    """The --details-from stage, reported but never fatal to the models."""
+    if remeshes is None or source_name not in [m.name for m in ready]:
+        return {"source": source_name, "error": "model %s was not remeshed with the collection" % source_name}
+    print("putting %s's details on the other remeshes" % source_name, flush=True)
+    try:
+        return transfer_details(source_name, remeshes, output_folder)
     except StageError as error:
         return {"source": source_name, "error": str(error)}
 
@@ -703,6 +738,9 @@ def parse_arguments(argv):
     parser.add_argument("--transfer-from", metavar="NAME",
                         help="carry model NAME's point arrays and texture coordinates onto every other remesh "
                         "(TARGET.from-NAME.vtp; TARGET.from-NAME.png with NAME's texture image)")
+    parser.add_argument("--details-from", metavar="NAME",
+                        help="every other model's coarse shape (levels 0 to 2) with model NAME's finer details, "
+                        "by Loop wavelets (TARGET.details-from-NAME.vtp; needs a uniform remesh of level 3 or more)")
     parser.add_argument("--pca", type=int, metavar="K",
                         help="principal components of the remeshes: their mean and K modes of variation "
                         "(mean.vtp with point arrays Mode0.., pca-coefficients.csv, pca-variances.csv, "
@@ -730,6 +768,12 @@ def parse_arguments(argv):
     if args.transfer_from is not None and args.transfer_from not in names:
         parser.error("--transfer-from %s: no model is named so (models are named by file name: %s)"
                      % (args.transfer_from, ", ".join(names)))
+    if args.details_from is not None and args.details_from not in names:
+        parser.error("--details-from %s: no model is named so (models are named by file name: %s)"
+                     % (args.details_from, ", ".join(names)))
+    if args.details_from is not None and (args.adaptive_tolerance > 0 or args.level < 3):
+        parser.error("--details-from: detail transfer needs a uniform remesh (no --adaptive-tolerance) of level 3 "
+                     "or more (it keeps the coarse models' levels 0 to 2)")
     count = len(args.mesh)
     if args.pca is not None:
         if count < 2:
@@ -871,6 +915,8 @@ def main(argv=None):
                 model.fail("remeshing the collection failed: %s" % error)
         if args.transfer_from is not None:
             report["transfer"] = run_transfer(args.transfer_from, ready, remeshes, domain, args.output)
+        if args.details_from is not None:
+            report["details"] = run_details(args.details_from, ready, remeshes, args.output)
 
     # What each stage's pictures need, for the stages that gave a result.
     stages = {}
@@ -903,7 +949,8 @@ def main(argv=None):
         return EXIT_NO_BASE_DOMAIN
     # A requested stage that failed is a failure too; pictures skipped for
     # want of a display are not.
-    stage_failed = any("error" in report.get(key, {}) for key in ("transfer", "pca", "blend_grid", "blend"))
+    stage_failed = any("error" in report.get(key, {})
+                       for key in ("transfer", "details", "pca", "blend_grid", "blend"))
     return 1 if failed or stage_failed or "errors" in report.get("renders", {}) else 0
 
 
@@ -947,6 +994,13 @@ def print_summary(models, report):
 
 def print_stage_summary(report):
     """The lines of the stages after remeshing."""
+    details = report.get("details")
+    if details is not None:
+        if "error" in details:
+            print("details from %s: FAILED: %s" % (details["source"], details["error"]))
+        else:
+            print("details from %s: above level %d, onto %d remeshes (%.3f s)"
+                  % (details["source"], details["last_coarse_level"], len(details["targets"]), details["seconds"]))
     pca = report.get("pca")
     if pca is not None:
         if "error" in pca:

@@ -38,6 +38,7 @@ from cmp_test_support import (
     landmarked_shrec_models,
     read_off_header,
     read_pinned,
+    triangles_of,
     write_off,
     write_text,
 )
@@ -323,7 +324,8 @@ def case_collection(tmp):
     out = os.path.join(tmp, "out")
     names = [os.path.splitext(os.path.basename(m))[0] for m, _ in pairs]
     # One run for every stage: (1, 0, ...) must give Spot back.
-    applications = ["--pca", "3", "--blend", "--blend-weights", ",".join(["1"] + ["0"] * (len(pairs) - 1))]
+    applications = ["--pca", "3", "--blend", "--blend-weights", ",".join(["1"] + ["0"] * (len(pairs) - 1)),
+                    "--details-from", "381"]
     status, stdout, stderr, report = run_cli(
         model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--transfer-from", "spot"] + applications,
         out, display=None if PICTURES else "")
@@ -361,6 +363,7 @@ def case_collection(tmp):
     check_contains(stdout, "straightened", "summary header")
     check_remeshed(out, report, stdout, names, 3)
     check_transferred(out, report, stdout, names[1:])
+    check_details(out, report, stdout, names, "381")
     check_pca(out, report, stdout, names, 3)
     corners = check_blend_grid(out, report, stdout, names[:3])
     blend = check_blend(out, report, stdout, dict(zip(names, [1.0] + [0.0] * (len(names) - 1))), False)
@@ -376,6 +379,27 @@ def case_collection(tmp):
         check_texture_fallbacks(tmp)
     else:
         check_pictures_skipped(out, report, stdout, "DISPLAY is not set")
+
+
+def check_details(out, report, stdout, names, source):
+    """--details-from: every other remesh with `source`'s level-3 details on
+    its own levels 0 to 2: same connectivity, close to the target (details
+    are small) but not equal to it."""
+    import numpy
+
+    details = report["details"]
+    check("error" not in details, "details stage failed: %s" % details.get("error"))
+    check_equal(sorted(details["targets"]), sorted(n for n in names if n != source), "details targets")
+    check_equal(details["last_coarse_level"], 2, "details last coarse level")
+    check_contains(stdout, "details from %s: above level 2, onto %d remeshes" % (source, len(names) - 1), "summary")
+    connectivity = read_vtp(os.path.join(out, "remesh_connectivity.vtp"))
+    for name in details["targets"]:
+        result = read_vtp(os.path.join(out, "%s.details-from-%s.vtp" % (name, source)))
+        check_equal(triangles_of(result), triangles_of(connectivity), name + ": details result connectivity")
+        target = points_of(read_vtp(os.path.join(out, name + ".remesh.vtp")))
+        moved = numpy.sqrt(((points_of(result) - target) ** 2).sum(axis=1).mean()) / size(target)
+        print("%s with %s's details: moved by %.3g of its size (RMS)" % (name, source, moved))
+        check(1e-4 < moved < 0.05, "%s with %s's details moved by %.3g of its size (RMS)" % (name, source, moved))
 
 
 def check_transferred(out, report, stdout, targets):
@@ -909,6 +933,9 @@ def case_argument_errors(tmp):
          "--adaptive-tolerance -0.5: give 0 (uniform) or a positive fraction"),
         (["--mesh", a, "--landmarks", la, "--adaptive-tolerance", "nan"], "--adaptive-tolerance nan: give 0"),
         (["--mesh", a, "--landmarks", la, "--transfer-from", "b"], "--transfer-from b: no model is named so"),
+        (["--mesh", a, "--landmarks", la, "--details-from", "b"], "--details-from b: no model is named so"),
+        (["--mesh", a, "--landmarks", la, "--details-from", "a", "--level", "2"],
+         "--details-from: detail transfer needs a uniform remesh (no --adaptive-tolerance) of level 3 or more"),
         (["--mesh", a, "--landmarks", la, "--pca", "1"], "--pca 1: principal components need at least two models"),
         (two + ["--pca", "0"], "--pca 0: give a number of modes from 1 to 1 (2 models vary in at most 1 direction)"),
         (two + ["--pca", "2"], "--pca 2: give a number of modes from 1 to 1"),
