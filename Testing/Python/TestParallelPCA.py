@@ -1,11 +1,12 @@
-"""Mesh PCA, Shape Blend and Wavelet Detail Transfer spread over the ranks of `mpirun -np N pvbatch`:
-every rank builds the same remeshed collection (the shipped examples plus
-two deformed copies, level 3), rank 0 writes it as a .vtm, and each rank
-reads only its share of the blocks (the XML multiblock reader splits them by
-piece). The filters then combine across ranks; their mean, modes,
-coefficients, blend and detail transfer (its two models held by different
-ranks) must equal a one-process run (a vtkDummyController)
-on the whole collection, to round-off.
+"""Mesh PCA, Shape Blend and Wavelet Detail Transfer spread over the ranks
+of `mpirun -np N pvbatch`: every rank builds the same straightened
+collection (the shipped examples plus two deformed copies), rank 0 writes it
+as a .vtm, and each rank reads only its share of the blocks (the XML
+multiblock reader splits them by piece) and remeshes them at level 3. The
+filters then combine across ranks; their mean, modes, coefficients, blend
+and detail transfer (its two models held by different ranks) must equal a
+one-process run (a vtkDummyController) on the whole collection remeshed at
+once, to round-off.
 
   mpirun -np 2 pvbatch TestParallelPCA.py OUTPUT_FOLDER     (PYTHONPATH: the consistent_mesh package)
 """
@@ -44,8 +45,8 @@ def landmarked(mesh, landmarks):
     return surface
 
 
-def remeshed_collection():
-    """Five models with one connectivity: the three examples and two
+def parameterized_collection():
+    """Five straightened models and their L0: the three examples and two
     smoothly deformed copies of the blob (so that the collection has modes)."""
     models = [landmarked("blob.off", "blob.vts"), landmarked("capsule.obj", "capsule.pinned"),
               landmarked("peanut.off", "peanut.csv")]
@@ -73,6 +74,12 @@ def remeshed_collection():
         surface.DeepCopy(straightener.GetOutputDataObject(0))
         blocks.SetBlock(index, surface)
         blocks.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), "model%d" % index)
+    return blocks, domain
+
+
+def remeshed(blocks, domain):
+    """The blocks remeshed at level 3 (uniform: the connectivity depends on
+    L0 and the level only, so ranks remeshing their own blocks agree)."""
     remesher = cmp.vtkCMPSemiRegularRemesher()
     remesher.SetInputData(0, blocks)
     remesher.SetInputData(1, domain)
@@ -125,11 +132,12 @@ def main():
     rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
     folder = sys.argv[1]
     path = os.path.join(folder, "collection.vtm")
-    collection = remeshed_collection()
+    blocks, domain = parameterized_collection()
+    collection = remeshed(blocks, domain)
     if rank == 0:
         os.makedirs(folder, exist_ok=True)
         writer = vtkXMLMultiBlockDataWriter()
-        writer.SetInputData(collection)
+        writer.SetInputData(blocks)
         writer.SetDataModeToBinary()  # appended mode is unreadable here (Documentation/known-issues.md)
         writer.SetFileName(path)
         check(writer.Write() == 1, "cannot write " + path)
@@ -138,7 +146,8 @@ def main():
     reader = vtkXMLMultiBlockDataReader()
     reader.SetFileName(path)
     reader.UpdatePiece(rank, ranks, 0)
-    share = reader.GetOutput()
+    # Each rank remeshes only the straightened models it holds.
+    share = remeshed(reader.GetOutput(), domain)
     held = sum(1 for b in range(share.GetNumberOfBlocks()) if share.GetBlock(b) is not None)
     mine, all_counts = vtkIntArray(), vtkIntArray()
     mine.InsertNextValue(held)
