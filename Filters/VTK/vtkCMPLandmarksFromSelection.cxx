@@ -5,7 +5,6 @@
 
 #include <vtkConvertSelection.h>
 #include <vtkDataArray.h>
-#include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>

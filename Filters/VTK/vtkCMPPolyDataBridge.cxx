@@ -15,6 +15,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
 #include <unordered_map>
 
 namespace cmp::bridge
@@ -198,16 +199,19 @@ vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain&
   return output;
 }
 
+vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  return array;
+}
+
 void setFeatureIds(vtkPolyData* surface, const LandmarkList& landmarks)
 {
-  const auto vertices = static_cast<int>(surface->GetNumberOfPoints());
-  auto featureIds = vtkSmartPointer<vtkIntArray>::New();
-  featureIds->SetName(kFeatureIdArray);
-  const std::vector<int> values = featureIdsOf(landmarks, vertices);
-  featureIds->SetNumberOfValues(vertices);
-  for (int v = 0; v < vertices; ++v)
-    featureIds->SetValue(v, values[v]);
-  surface->GetPointData()->AddArray(featureIds);
+  surface->GetPointData()->AddArray(
+    intArray(kFeatureIdArray, featureIdsOf(landmarks, static_cast<int>(surface->GetNumberOfPoints()))));
 }
 
 std::vector<int> fileToMeshPointMap(vtkPolyData* surface)

@@ -11,6 +11,7 @@
 
 #include <vtkSmartPointer.h>
 
+class vtkIntArray;
 class vtkPolyData;
 class vtkDataSet;
 class vtkFieldData;
@@ -26,6 +27,10 @@ constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
 constexpr const char* kCornerTCoordsArray = "CornerTCoords";
 /// \brief Name of the cell array holding the base triangle (patch) of each triangle.
 constexpr const char* kPatchIdArray = "PatchId";
+/// \brief Name of a remesh's point array: the level at which each vertex appears.
+constexpr const char* kVertexLevelArray = "VertexLevel";
+/// \brief Name of a remesh's cell array: the quadrisection level of each triangle.
+constexpr const char* kLevelArray = "Level";
 
 /// \brief Copies points and triangles; fails, naming the cell, if `input`
 ///        has cells that are not triangles (vertices, lines, polygons, strips).
@@ -57,6 +62,9 @@ vtkSmartPointer<vtkPolyData> toPolyData(const BaseDomain& domain);
 ///        `BaseEdgeId`, `FeatureIdA` and `FeatureIdB` (the landmarks at each
 ///        curve's first and last point).
 vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain);
+
+/// \brief A vtkIntArray named `name` holding `values`.
+vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values);
 
 /// \brief Adds (or replaces) the point array `FeatureId` of `surface`
 ///        (int: -1, or the feature index at each landmark vertex).

@@ -76,8 +76,9 @@ namespace
 
 using cmp::bridge::kBaseCoordinatesArray;
 using cmp::bridge::kBaseTriangleArray;
-constexpr const char* kLevelArray = "Level";
-constexpr const char* kVertexLevelArray = "VertexLevel";
+using cmp::bridge::intArray;
+using cmp::bridge::kLevelArray;
+using cmp::bridge::kVertexLevelArray;
 
 using Clock = std::chrono::steady_clock;
 
@@ -86,15 +87,6 @@ double secondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values)
-{
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (std::size_t i = 0; i < values.size(); ++i)
-    array->SetValue(static_cast<vtkIdType>(i), values[i]);
-  return array;
-}
 
 /// What every model's remesh shares: the connectivity and the arrays that
 /// depend only on L0 and the level. Built once; the outputs share the VTK

@@ -29,8 +29,9 @@ vtkStandardNewMacro(vtkCMPWaveletDetailTransfer);
 namespace
 {
 
-constexpr const char* kVertexLevelArray = "VertexLevel";
-constexpr const char* kTriangleLevelArray = "Level";
+using cmp::bridge::intArray;
+using cmp::bridge::kVertexLevelArray;
+using cmp::bridge::kLevelArray;
 
 /// What the transfer needs of one model, the same on every rank.
 struct SharedModel
@@ -51,10 +52,10 @@ cmp::Status packModel(const std::vector<cmp::Vec3>& positions, vtkPolyData* mode
   if (!withLevels)
     return {};
   vtkDataArray* vertexLevels = model->GetPointData()->GetArray(kVertexLevelArray);
-  vtkDataArray* triangleLevels = model->GetCellData()->GetArray(kTriangleLevelArray);
+  vtkDataArray* triangleLevels = model->GetCellData()->GetArray(kLevelArray);
   if (!vertexLevels || !triangleLevels)
     return cmp::Status::error(std::string("the model has no ") + (vertexLevels ? "cell" : "point") + " array '" +
-      (vertexLevels ? kTriangleLevelArray : kVertexLevelArray) +
+      (vertexLevels ? kLevelArray : kVertexLevelArray) +
       "': give the output of Semi-Regular Remesher, whose levels the wavelets follow");
   for (vtkIdType v = 0; v < vertexLevels->GetNumberOfTuples(); ++v)
     flat.push_back(vertexLevels->GetComponent(v, 0));
@@ -132,15 +133,6 @@ vtkSmartPointer<vtkDoubleArray> coefficientArray(const char* name, const Eigen::
   for (Eigen::Index v = 0; v < values.rows(); ++v)
     for (Eigen::Index c = 0; c < values.cols(); ++c)
       array->SetTypedComponent(v, static_cast<int>(c), values(v, c));
-  return array;
-}
-
-vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values)
-{
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  std::copy(values.begin(), values.end(), array->GetPointer(0));
   return array;
 }
 
@@ -321,8 +313,8 @@ int vtkCMPWaveletDetailTransfer::RequestData(
   // A rank 0 that holds no model still gives the levels the wavelets used.
   if (!result->GetPointData()->HasArray(kVertexLevelArray))
     result->GetPointData()->AddArray(intArray(kVertexLevelArray, coarse.vertexLevels));
-  if (!result->GetCellData()->HasArray(kTriangleLevelArray))
-    result->GetCellData()->AddArray(intArray(kTriangleLevelArray, coarse.triangleLevels));
+  if (!result->GetCellData()->HasArray(kLevelArray))
+    result->GetCellData()->AddArray(intArray(kLevelArray, coarse.triangleLevels));
   vtkPointData* points = result->GetPointData();
   points->AddArray(coefficientArray("WaveletCoefficients", blended.values));
   points->AddArray(coefficientArray("CoarseModelCoefficients", coarseCoefficients.values));
