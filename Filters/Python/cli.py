@@ -961,13 +961,6 @@ def print_summary(models, report):
     else:
         print("base domain: %d vertices, %d triangles, %d edges (%s)"
               % (domain["vertices"], domain["triangles"], domain["edges"], domain["source"]))
-    transfer = report.get("transfer")
-    if transfer is not None:
-        if "error" in transfer:
-            print("transfer from %s: FAILED: %s" % (transfer["source"], transfer["error"]))
-        else:
-            print("transfer from %s: onto %d remeshes (%.3f s)"
-                  % (transfer["source"], len(transfer["targets"]), transfer["seconds"]))
     print_stage_summary(report)
     remesh = report.get("remesh", {})
     if "error" in remesh:
@@ -992,15 +985,24 @@ def print_summary(models, report):
               % (width, model.name, r.get("vertices", "-"), seconds, net, straight, hausdorff, result))
 
 
+def _print_from_source(stage, title, how=""):
+    """The summary line of a stage that carries one model's data onto the
+    other remeshes (nothing if it did not run)."""
+    if stage is None:
+        return
+    if "error" in stage:
+        print("%s from %s: FAILED: %s" % (title, stage["source"], stage["error"]))
+    else:
+        print("%s from %s: %sonto %d remeshes (%.3f s)"
+              % (title, stage["source"], how, len(stage["targets"]), stage["seconds"]))
+
+
 def print_stage_summary(report):
     """The lines of the stages after remeshing."""
+    _print_from_source(report.get("transfer"), "transfer")
     details = report.get("details")
-    if details is not None:
-        if "error" in details:
-            print("details from %s: FAILED: %s" % (details["source"], details["error"]))
-        else:
-            print("details from %s: above level %d, onto %d remeshes (%.3f s)"
-                  % (details["source"], details["last_coarse_level"], len(details["targets"]), details["seconds"]))
+    done = details is not None and "error" not in details
+    _print_from_source(details, "details", "above level %d, " % details["last_coarse_level"] if done else "")
     pca = report.get("pca")
     if pca is not None:
         if "error" in pca:

@@ -19,12 +19,14 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace cmp::test
 {
@@ -156,6 +158,23 @@ vtkSmartPointer<vtkMultiBlockDataSet> parameterizedExamples(vtkPolyData* l0)
     models->GetMetaData(m)->Set(vtkCompositeDataSet::NAME(), files[m][0].c_str());
   }
   return models;
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> blocksOf(std::initializer_list<vtkPolyData*> surfaces)
+{
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  unsigned b = 0;
+  for (vtkPolyData* surface : surfaces)
+    blocks->SetBlock(b++, surface);
+  return blocks;
+}
+
+vtkSmartPointer<vtkPolyData> withNaNAt(vtkPolyData* surface, vtkIdType point)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(surface);
+  copy->GetPoints()->SetPoint(point, std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  return copy;
 }
 
 } // namespace cmp::test

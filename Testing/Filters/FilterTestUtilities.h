@@ -7,6 +7,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -68,5 +69,11 @@ vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0
 ///        straightened against `l0`, as one multiblock with blocks named
 ///        after them: the input of a Semi-Regular Remesher collection.
 vtkSmartPointer<vtkMultiBlockDataSet> parameterizedExamples(vtkPolyData* l0);
+
+/// \brief A multiblock of `surfaces`, block k = surface k (not copied).
+vtkSmartPointer<vtkMultiBlockDataSet> blocksOf(std::initializer_list<vtkPolyData*> surfaces);
+
+/// \brief A copy of `surface` whose point `point` has a NaN coordinate.
+vtkSmartPointer<vtkPolyData> withNaNAt(vtkPolyData* surface, vtkIdType point);
 
 } // namespace cmp::test

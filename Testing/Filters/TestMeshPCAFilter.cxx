@@ -20,7 +20,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 
 using namespace cmp::test;
 
@@ -230,13 +229,8 @@ TEST_F(CollectionFilters, RefuseCollectionsWithoutOneConnectivity)
   turned->SetBlock(1, reordered);
   expectError(pca, turned, "block 1: its connectivity differs from block 0: triangle 5 is");
 
-  vtkNew<vtkPolyData> withNaN;
-  withNaN->DeepCopy(block(remeshes_, 1));
-  withNaN->GetPoints()->SetPoint(7, std::numeric_limits<double>::quiet_NaN(), 0, 0);
-  vtkNew<vtkMultiBlockDataSet> nan;
-  nan->SetBlock(0, block(remeshes_, 0));
-  nan->SetBlock(1, withNaN);
-  expectError(pca, nan, "block 1: point 7 has a NaN or infinite coordinate");
+  vtkSmartPointer<vtkPolyData> withNaN = withNaNAt(block(remeshes_, 1), 7);
+  expectError(pca, blocksOf({ block(remeshes_, 0), withNaN }), "block 1: point 7 has a NaN or infinite coordinate");
 
   vtkNew<vtkMultiBlockDataSet> one;
   one->SetBlock(0, block(remeshes_, 0));

@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 using namespace cmp::test;
 
@@ -201,24 +200,15 @@ TEST_F(DetailTransferOnExamples, ReportsBadInput)
   vtkNew<vtkPolyData> withoutLevels;
   withoutLevels->DeepCopy(block(remeshes_, 0));
   withoutLevels->GetPointData()->RemoveArray("VertexLevel");
-  vtkNew<vtkMultiBlockDataSet> unleveled;
-  unleveled->SetBlock(0, withoutLevels);
-  unleveled->SetBlock(1, block(remeshes_, 1));
-  expectError(unleveled, "block 0: the model has no point array 'VertexLevel'", defaults);
+  expectError(blocksOf({ withoutLevels, block(remeshes_, 1) }), "block 0: the model has no point array 'VertexLevel'",
+    defaults);
 
   vtkSmartPointer<vtkMultiBlockDataSet> coarser = remesh(models_, l0_, 2);
-  vtkNew<vtkMultiBlockDataSet> mixed;
-  mixed->SetBlock(0, block(remeshes_, 0));
-  mixed->SetBlock(1, block(coarser, 1));
-  expectError(mixed, "its connectivity differs from block 0", defaults);
+  expectError(blocksOf({ block(remeshes_, 0), block(coarser, 1) }), "its connectivity differs from block 0", defaults);
 
-  vtkNew<vtkPolyData> withNaN;
-  withNaN->DeepCopy(block(remeshes_, 1));
-  withNaN->GetPoints()->SetPoint(7, std::numeric_limits<double>::quiet_NaN(), 0, 0);
-  vtkNew<vtkMultiBlockDataSet> nan;
-  nan->SetBlock(0, block(remeshes_, 0));
-  nan->SetBlock(1, withNaN);
-  expectError(nan, "block 1: point 7 has a NaN or infinite coordinate", defaults);
+  vtkSmartPointer<vtkPolyData> withNaN = withNaNAt(block(remeshes_, 1), 7);
+  expectError(
+    blocksOf({ block(remeshes_, 0), withNaN }), "block 1: point 7 has a NaN or infinite coordinate", defaults);
 
   vtkNew<vtkMultiBlockDataSet> none;
   expectError(none, "the input multiblock holds no surfaces", defaults);

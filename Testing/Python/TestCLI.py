@@ -95,24 +95,23 @@ def obj_points(path):
         return [tuple(float(w) for w in line.split()[1:4]) for line in f if line.startswith("v ")]
 
 
-def read_vtp(path):
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-
+def _read_xml(reader, path):
     check(os.path.isfile(path), "missing output file " + path)
-    reader = vtkXMLPolyDataReader()
     reader.SetFileName(path)
     reader.Update()
     return reader.GetOutput()
+
+
+def read_vtp(path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+    return _read_xml(vtkXMLPolyDataReader(), path)
 
 
 def read_vtm(path):
     from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader
 
-    check(os.path.isfile(path), "missing output file " + path)
-    reader = vtkXMLMultiBlockDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
+    return _read_xml(vtkXMLMultiBlockDataReader(), path)
 
 
 def cells_of(polydata):
