@@ -11,6 +11,7 @@ packages=(
   cmake g++ ninja-build pkg-config
   paraview-dev python3-paraview python3-mpi4py python3-numpy
   libeigen3-dev libgtest-dev xvfb
+  libcgal-demo
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libqt5opengl5-dev
   libopenmpi-dev openmpi-bin libutfcpp-dev libboost-dev libexpat1-dev libfreetype-dev libgdal-dev
   libgl2ps-dev libglew-dev libhdf5-mpi-dev libjpeg-dev liblz4-dev liblzma-dev libxml2-dev

@@ -12,7 +12,16 @@ principal components (mean.vtp with the modes, pca-coefficients.csv,
 pca-variances.csv, pca-aligned.vtm), blends (blend-grid.vtm, blend.vtp), and
 PNG pictures of these.
 
+With no --mesh it runs a collection described by a collection.json
+(--collection FOLDER), by default the CGAL quadrupeds of Debian's
+libcgal-demo with the landmarks and base domain shipped in
+Data/cgal-quadrupeds, and every stage that collection asks for, into
+./results. Every run writes report.md and report.html, which show the
+pictures: inputs.png (each model's patch layout), remeshes.png, and those of
+the stages.
+
 Usage:
+  consistent-remesh [--collection FOLDER] [--output DIR] [options]
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
                     [--adaptive-tolerance T] [--transfer-from NAME] [--details-from NAME] [--pca K]
@@ -21,8 +30,9 @@ Usage:
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others; the exit status is 1 if any
-model failed or a requested stage failed, 2 for a usage error and 3 if the
-base domain could not be made. If the collection's remeshing fails, every
+model failed or a requested stage failed, 2 for a usage error, 3 if the
+base domain could not be made and 4 if a collection's meshes cannot be
+had (the package is not installed or has changed). If the collection's remeshing fails, every
 model taking part in it fails. Pictures need an X display (xvfb-run -a
 will do); without one they are skipped, which is said and is no failure.
 """
@@ -39,13 +49,17 @@ from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand, vtkIntArray, vtkLogger
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
+from vtkmodules.vtkFiltersTexture import vtkTextureMapToCylinder
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter, vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 from . import CMPFilters as cmp
+from . import collection
 from . import render
+from . import report as written_report
 
 
 EXIT_NO_BASE_DOMAIN = 3
+EXIT_NO_COLLECTION = 4
 DEFAULT_LEVEL = 4
 MAX_LEVEL = 8
 # Rows of pca-modes.png: more would make the picture too large to read.
@@ -96,6 +110,7 @@ class Model:
         self.name = os.path.splitext(os.path.basename(mesh_path))[0]
         self.surface = None
         self.parameterized = None  # NetStraightener's surface, the remesher's input
+        self.curves = None  # the last net filter's curves
         self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
 
     def timed(self, stage, function, *args):
@@ -175,7 +190,8 @@ def _run_net_filter(model, stage, algorithm, surface, domain, output_folder, sur
     algorithm.SetInputData(1, domain)
     result = model.timed(stage, _run, algorithm)
     write_polydata(result, os.path.join(output_folder, model.name + surface_suffix))
-    write_polydata(algorithm.GetOutputDataObject(1), os.path.join(output_folder, model.name + curves_suffix))
+    model.curves = algorithm.GetOutputDataObject(1)
+    write_polydata(model.curves, os.path.join(output_folder, model.name + curves_suffix))
     return result, _field_reader(result)
 
 
@@ -296,14 +312,17 @@ def transfer_attributes(source, remeshes, domain, output_folder):
     texture seams split so the result renders: writes
     TARGET.from-SOURCE.vtp per other model and returns the stage's figures.
     Raises StageError if the filter fails or a file cannot be written."""
+    start = time.perf_counter()
+    surface, generated = with_texture_coordinates(source.parameterized)
     transfer = cmp.vtkCMPAttributeTransfer()
     transfer.SetInputData(0, remeshes)
-    transfer.SetInputData(1, source.parameterized)
+    transfer.SetInputData(1, surface)
     transfer.SetInputData(2, domain)
     transfer.SplitTextureSeamsOn()
-    start = time.perf_counter()
     results = _run(transfer)
     figures = {"source": source.name, "targets": {}}
+    if generated:
+        figures["texture_coordinates"] = "generated: %s has none, so it got cylindrical ones" % source.name
     for index in range(results.GetNumberOfBlocks()):
         name = results.GetMetaData(index).Get(vtkCompositeDataSet.NAME())
         if name == source.name:
@@ -318,6 +337,26 @@ def transfer_attributes(source, remeshes, domain, output_folder):
         }
     figures["seconds"] = round(time.perf_counter() - start, 4)
     return figures
+
+
+def with_texture_coordinates(surface):
+    """(surface, False) if it has texture coordinates (per point or per
+    triangle corner), else (a copy with
+    cylindrical ones about its longest axis, True): a model without a
+    texture (the CGAL quadrupeds have none) still shows where its surface
+    lands on the others, as a checkerboard in the pictures."""
+    # The reader keeps texture coordinates with seams per triangle corner.
+    if surface.GetPointData().GetTCoords() is not None or surface.GetCellData().GetArray("CornerTCoords"):
+        return surface, False
+    cylinder = vtkTextureMapToCylinder()
+    cylinder.SetInputData(surface)
+    cylinder.AutomaticCylinderGenerationOn()
+    # Mirrored instead of wrapping from 1 back to 0, which would smear the
+    # whole texture across one column of triangles.
+    cylinder.PreventSeamOn()
+    textured = vtkPolyData()
+    textured.ShallowCopy(_run(cylinder))
+    return textured, True
 
 
 def run_transfer(source_name, ready, remeshes, domain, output_folder):
@@ -574,6 +613,9 @@ class Pictures:
 def make_pictures(pictures, stages, models):
     """Draws what the stages in `stages` (name -> what its picture needs)
     produced."""
+    overview = stages.get("overview")
+    if overview is not None:
+        make_overview_pictures(pictures, *overview)
     pca = stages.get("pca")
     if pca is not None:
         mean, figures = pca
@@ -603,6 +645,43 @@ def make_pictures(pictures, stages, models):
     if transfer is not None:
         figures, remeshes = transfer
         make_transfer_pictures(pictures, figures, next(m for m in models if m.name == figures["source"]), remeshes)
+
+
+def make_overview_pictures(pictures, ready, remeshes):
+    """inputs.png: every parameterized model with its straightened net,
+    coloured by patch; remeshes.png: every remesh coloured by the base
+    triangle it samples. A patch has the same colour on every model, and
+    each model is scaled to one size and turned as the first one stands
+    (by its remesh, or its landmarks if the remeshing failed)."""
+    first = ready[0]
+    remesh = _block_by_name(remeshes) if remeshes is not None else {}
+
+    def correspondence(model):
+        if model.name in remesh:
+            return render.points_of(remesh[model.name])
+        return render.points_of(model.parameterized)[_landmark_points(model.parameterized)]
+
+    reference = correspondence(first)
+    places = {m.name: render.similarity_to(correspondence(m), reference) for m in ready}
+    inputs = [(places[m.name](m.parameterized), places[m.name](m.curves), m.name, False) for m in ready]
+    view = pictures.view([surface for surface, _, _, _ in inputs])
+    pictures.make("inputs.png", render.picture_patches, inputs,
+                  "The models and their patch layouts (a patch has one colour on every model)", view)
+    if remesh:
+        level = int(_field_reader(remesh[first.name])("RemeshLevel"))
+        remeshed = [(places[m.name](remesh[m.name]), None, m.name, False) for m in ready]
+        pictures.make("remeshes.png", render.picture_patches, remeshed,
+                      "Remeshes of level %d: one connectivity, coloured by base triangle" % level, view)
+
+
+def _landmark_points(surface):
+    """The point ids of landmarks 0, 1, ... of `surface`."""
+    ids = surface.GetPointData().GetArray("FeatureId")
+    found = {}
+    for point in range(ids.GetNumberOfTuples()):
+        if ids.GetValue(point) >= 0:
+            found[ids.GetValue(point)] = point
+    return [found[k] for k in sorted(found)]
 
 
 def _block_by_name(blocks):
@@ -639,7 +718,11 @@ def make_transfer_pictures(pictures, figures, source, remeshes):
         title = "%s's %%s on %s" % (source.name, target)
         if surface.GetPointData().GetTCoords() is not None:
             if texture is None:
-                if checker is None:
+                if checker is None and "texture_coordinates" in figures:
+                    pictures.notes.append("%s has no texture: the cylindrical texture coordinates it got are drawn "
+                                          "with a checkerboard" % source.name)
+                    checker = render.checkerboard_texture()
+                elif checker is None:
                     pictures.notes.append("no texture image beside %s (%s_texture.png or map_Kd of its .mtl): "
                                           "its texture coordinates are drawn with a checkerboard"
                                           % (source.mesh_path, source.name))
@@ -728,7 +811,11 @@ def parse_arguments(argv):
     source = parser.add_mutually_exclusive_group()
     source.add_argument("--base-domain", help="base domain L0 (.vtp with FeatureId, or .obj/.off: vertex i = landmark i)")
     source.add_argument("--base-domain-from", type=int, metavar="N", help="build L0 from the N-th model (0-based)")
-    parser.add_argument("--level", type=int, default=DEFAULT_LEVEL, metavar="J",
+    parser.add_argument("--collection", metavar="FOLDER",
+                        help="run the collection described by FOLDER/collection.json instead of --mesh and "
+                        "--landmarks (with neither, the default: the CGAL quadrupeds of Debian's libcgal-demo, "
+                        "remeshed, averaged, analysed, blended and textured, into ./results)")
+    parser.add_argument("--level", type=int, metavar="J",
                         help="remesh with L0 refined J times by 1-to-4 quadrisection, 0 to %d (default %d)"
                         % (MAX_LEVEL, DEFAULT_LEVEL))
     parser.add_argument("--adaptive-tolerance", type=float, default=0.0, metavar="T",
@@ -753,12 +840,24 @@ def parse_arguments(argv):
                         "separated by commas or spaces; a weight outside [0, 1] extrapolates (blend.vtp, blend.png)")
     parser.add_argument("--no-render", action="store_true",
                         help="make no PNG pictures (they need an X display; xvfb-run -a gives one)")
-    parser.add_argument("--view-up", default="+y", metavar="AXIS",
+    parser.add_argument("--view-up", metavar="AXIS",
                         help="the models' up axis for the pictures: +y (default), -y, +z, -z, +x or -x")
-    parser.add_argument("--output", required=True, help="output folder")
+    parser.add_argument("--output", help="output folder (required with --mesh; default ./results for a collection)")
     args = parser.parse_args(_attach_negative_weights(argv))
+    args.collection_data = None
+    if args.collection is not None and (args.mesh or args.landmarks):
+        parser.error("--collection %s with --mesh or --landmarks: give a collection or models, not both"
+                     % args.collection)
+    if not args.mesh and not args.landmarks:
+        use_collection(parser, args)
     if not args.mesh:
         parser.error("give at least one --mesh with its --landmarks")
+    if args.output is None:
+        parser.error("the following arguments are required: --output")
+    if args.level is None:
+        args.level = DEFAULT_LEVEL
+    if args.view_up is None:
+        args.view_up = "+y"
     if len(args.mesh) != len(args.landmarks):
         parser.error("%d --mesh but %d --landmarks: give one landmark file per mesh" % (len(args.mesh), len(args.landmarks)))
     names = [os.path.splitext(os.path.basename(m))[0] for m in args.mesh]
@@ -803,6 +902,27 @@ def parse_arguments(argv):
     if os.path.exists(args.output) and not os.path.isdir(args.output):
         parser.error("--output %s exists and is not a folder" % args.output)
     return args
+
+
+def use_collection(parser, args):
+    """Fills the models and, where not given, the options from a collection
+    (the default one if --collection is not given); its meshes are only
+    unpacked by main."""
+    try:
+        data = collection.Collection(args.collection or collection.default_folder())
+    except collection.CollectionError as error:
+        parser.error(str(error))
+    args.collection_data = data
+    args.mesh, args.landmarks = data.mesh_paths(), data.landmark_paths()
+    if args.base_domain is None and args.base_domain_from is None:
+        args.base_domain = data.base_domain
+    stages = data.stages
+    for option in ("level", "pca", "transfer_from", "view_up"):
+        if getattr(args, option) is None and stages.get(option) is not None:
+            setattr(args, option, stages[option])
+    args.blend = args.blend or bool(stages.get("blend"))
+    if args.output is None:
+        args.output = "results"
 
 
 def _attach_negative_weights(argv):
@@ -850,8 +970,18 @@ def main(argv=None):
     except OSError as error:
         print("consistent-remesh: cannot create the output folder: %s" % error, file=sys.stderr)
         return 2
+    report = {"models": {}, "command": ["consistent-remesh"] + list(sys.argv[1:] if argv is None else argv)}
+    if args.collection_data is not None:
+        data = args.collection_data
+        print("%s: %s" % (data.title, data.description), flush=True)
+        try:
+            data.unpack(lambda message: print(message, flush=True))
+        except collection.CollectionError as error:
+            print("consistent-remesh: %s" % error, file=sys.stderr)
+            return EXIT_NO_COLLECTION
+        report["collection"] = {"title": data.title, "description": data.description, "folder": data.folder,
+                                "meshes": data.cache}
     models = [Model(m, l) for m, l in zip(args.mesh, args.landmarks)]
-    report = {"models": {}}
 
     for index, model in enumerate(models):
         print("[%d/%d] %s: reading" % (index + 1, len(models), model.name), flush=True)
@@ -879,20 +1009,24 @@ def main(argv=None):
         report["base_domain"] = {"error": str(error)}
         domain = None
 
-    for model in models:
+    for index, model in enumerate(models):
         if model.surface is None:
             continue
         if domain is None:
             model.fail("no base domain: " + report["base_domain"]["error"])
             continue
+        step = "[%d/%d] %s:" % (index + 1, len(models), model.name)
         try:
             check_against_base_domain(model, domain)
-            print("%s: tracing the net" % model.name, flush=True)
+            print("%s tracing the net" % step, flush=True)
             traced = trace_net(model, domain, args.output)
-            print("%s: straightening the net" % model.name, flush=True)
+            print("%s straightening the net (traced in %.2f s)" % (step, model.report["seconds"]["trace"]),
+                  flush=True)
             straighten_net(model, domain, traced, args.output)
+            print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
         except StageError as error:
             model.fail(error)
+            print("%s FAILED: %s" % (step, error), flush=True)
 
     # One run of the remesher for the whole collection: one connectivity.
     ready = [m for m in models if m.parameterized is not None]
@@ -934,7 +1068,8 @@ def main(argv=None):
         report["blend"], blend = run_blend(args.blend_weights, models, ready, remeshes, args.output)
         if blend is not None:
             stages["blend"] = (blend, args.blend_weights)
-    if any(key in report for key in ("transfer", "pca", "blend_grid", "blend")):
+    if ready:
+        stages["overview"] = (ready, remeshes)
         report["renders"] = run_pictures(args, stages, models)
 
     for model in models:
@@ -943,8 +1078,11 @@ def main(argv=None):
     report["failed"] = failed
     with open(os.path.join(args.output, "report.json"), "w") as out:
         json.dump(report, out, indent=2)
+    written_report.write(report, args.output)
 
     print_summary(models, report)
+    print("report: %s" % ", ".join(os.path.join(args.output, name)
+                                   for name in ("report.json",) + written_report.FILES))
     if domain is None:
         return EXIT_NO_BASE_DOMAIN
     # A requested stage that failed is a failure too; pictures skipped for

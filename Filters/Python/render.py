@@ -10,13 +10,14 @@ reachable X server with GLX aborts the whole process, so `unavailable_reason`
 asks Xlib first and the caller skips the pictures instead.
 """
 
+import colorsys
 import ctypes
 import ctypes.util
 import os
 
 import numpy
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkPoints, vtkUnsignedCharArray
+from vtkmodules.vtkCommonCore import vtkLookupTable, vtkPoints, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkIOImage import vtkImageReader2Factory, vtkPNGWriter
@@ -38,7 +39,9 @@ BACKGROUND = (1.0, 1.0, 1.0)
 CLAY = (0.86, 0.80, 0.71)
 TEXT = (0.1, 0.1, 0.1)
 # The surface correspondence arrays every remesh carries: nothing to look at.
-CORRESPONDENCE_ARRAYS = {"FeatureId", "BaseTriangle", "BaseCoordinates", "UnsplitPointId", "Normals", "TCoords"}
+CORRESPONDENCE_ARRAYS = {"FeatureId", "BaseTriangle", "BaseCoordinates", "UnsplitPointId", "Normals", "TCoords",
+                         "VertexLevel"}
+CURVE_COLOUR = (0.12, 0.12, 0.14)
 TEXTURE_SIZE = 1024
 TITLE_HEIGHT = 36  # pixels above the panels when a sheet has a title
 AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
@@ -134,6 +137,19 @@ class Panel:
         self.scalars = scalars
         self.scalar_range = scalar_range
         self.texture = texture
+        self.patches = None  # a cell array of patch ids, each drawn in its own colour
+        self.curves = None  # polylines drawn over the surface
+        self.edges = False
+
+
+def patch_panel(surface, label, patches="PatchId", curves=None, edges=False):
+    """A panel of `surface` with each patch (cell array `patches`) in its
+    own colour, optionally with `curves` drawn over it and its edges shown."""
+    panel = Panel(surface, label)
+    panel.patches = patches
+    panel.curves = curves
+    panel.edges = edges
+    return panel
 
 
 class Sheet:
@@ -179,6 +195,8 @@ class Sheet:
                                  x0 + self.cell_size[0] / width, y1)
             renderer.SetBackground(*BACKGROUND)
             renderer.AddActor(_actor(panel))
+            if panel.curves is not None:
+                renderer.AddActor(_curve_actor(panel.curves))
             if panel.label:
                 renderer.AddActor2D(_text(panel.label, 15, self.cell_size[0] / 2, 8, centred=True))
             # The label sits below the shape: the camera looks a little
@@ -240,7 +258,18 @@ def _actor(panel):
     properties.SetDiffuse(0.85)
     properties.SetSpecular(0.12)
     properties.SetSpecularPower(25)
-    if panel.texture is not None:
+    if panel.edges:
+        properties.EdgeVisibilityOn()
+        properties.SetEdgeColor(*CURVE_COLOUR)
+        properties.SetLineWidth(0.5)
+    if panel.patches is not None:
+        count = int(panel.polydata.GetCellData().GetArray(panel.patches).GetRange()[1]) + 1
+        mapper.SetLookupTable(patch_colours(count))
+        mapper.SetScalarModeToUseCellFieldData()
+        mapper.SelectColorArray(panel.patches)
+        mapper.SetScalarRange(0, count - 1)
+        mapper.ScalarVisibilityOn()
+    elif panel.texture is not None:
         mapper.ScalarVisibilityOff()
         properties.SetColor(1, 1, 1)
         properties.SetSpecular(0.05)
@@ -260,6 +289,36 @@ def _actor(panel):
         mapper.ScalarVisibilityOff()
         properties.SetColor(*CLAY)
     return actor
+
+
+def _curve_actor(curves):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(curves)
+    mapper.ScalarVisibilityOff()
+    # Drawn over the surface they lie on, not half hidden in it.
+    mapper.SetResolveCoincidentTopologyToPolygonOffset()
+    mapper.SetRelativeCoincidentTopologyLineOffsetParameters(0, -66000)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*CURVE_COLOUR)
+    actor.GetProperty().SetLineWidth(2.0)
+    actor.GetProperty().LightingOff()
+    return actor
+
+
+def patch_colours(count):
+    """`count` colours that neighbours can tell apart: hues stepped by the
+    golden angle, light enough for the shading to read."""
+    table = vtkLookupTable()
+    table.SetNumberOfTableValues(max(count, 1))
+    for index in range(max(count, 1)):
+        hue = (index * 0.618033988749895) % 1.0
+        saturation = 0.45 + 0.2 * (index % 3) / 2
+        red, green, blue = colorsys.hsv_to_rgb(hue, saturation, 0.95)
+        table.SetTableValue(index, red, green, blue, 1.0)
+    table.SetTableRange(0, max(count - 1, 1))
+    table.Build()
+    return table
 
 
 def read_texture(path):
@@ -374,6 +433,27 @@ def rigid_motion(moving, fixed):
     return rotation, fixed_centre - moving_centre @ rotation.T
 
 
+def normalised(points):
+    """`points` moved to their centre and scaled to a root-mean-square
+    radius of 1: (points, centre, radius)."""
+    centre = points.mean(axis=0)
+    radius = float(numpy.sqrt(((points - centre) ** 2).sum(axis=1).mean())) or 1.0
+    return (points - centre) / radius, centre, radius
+
+
+def similarity_to(moving, fixed):
+    """The map that scales the points `moving` to the size of `fixed` and
+    turns them as `fixed` stand (counterparts row by row), both first
+    brought to their centres and a unit size: a function of a polydata.
+    Shapes of very different sizes (a camel of 1.4 units, a triceratops
+    of 20) then share one picture."""
+    moving_unit, moving_centre, moving_radius = normalised(moving)
+    fixed_unit, _, _ = normalised(fixed)
+    rotation, _ = rigid_motion(moving_unit, fixed_unit)
+    return lambda polydata: _with_points(polydata, ((points_of(polydata) - moving_centre) / moving_radius)
+                                         @ rotation.T)
+
+
 def moved(polydata, rotation, translation):
     """A copy of `polydata` with its points moved rigidly."""
     points = vtk_to_numpy(polydata.GetPoints().GetData()).astype(float)
@@ -450,4 +530,14 @@ def picture_single(surface, label, view, texture, scalars, path):
         scalar_range = surface.GetPointData().GetArray(scalars).GetRange()
     sheet = Sheet(1, 1, (800, 600), label)
     sheet.add(0, 0, Panel(surface, None, scalars, scalar_range, texture))
+    sheet.write(path, view)
+
+
+def picture_patches(entries, title, view, path, columns=3):
+    """`entries`: (surface, curves or None, label, edges) per model, in a
+    grid of `columns`; every surface coloured by its PatchId."""
+    rows = -(-len(entries) // columns)
+    sheet = Sheet(min(columns, len(entries)), rows, (420, 320), title)
+    for index, (surface, curves, label, edges) in enumerate(entries):
+        sheet.add(index % columns, index // columns, patch_panel(surface, label, curves=curves, edges=edges))
     sheet.write(path, view)

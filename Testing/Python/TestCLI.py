@@ -23,6 +23,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tarfile
 import tempfile
 
 sys.dont_write_bytecode = True  # keep the source folder clean
@@ -49,19 +50,21 @@ PICTURES = False
 KEEP_PICTURES = None
 
 
-def run_cli(arguments, output=None, display=None):
+def run_cli(arguments, output=None, display=None, environment=None, folder=None):
     """Runs consistent-remesh; returns (exit status, stdout, stderr, report
     or None). The command must find its Python package by itself, so
     PYTHONPATH is not passed on. `display`: None keeps this process's
-    DISPLAY, "" unsets it, anything else replaces it."""
+    DISPLAY, "" unsets it, anything else replaces it. `environment`: more
+    variables. `folder`: the working folder."""
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PV_PLUGIN_PATH")}
+    env.update(environment or {})
     if display is not None:
         env.pop("DISPLAY", None)
         if display:
             env["DISPLAY"] = display
     command = [COMMAND] + list(arguments) + (["--output", output] if output else [])
     result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            universal_newlines=True, timeout=300)
+                            universal_newlines=True, timeout=300, cwd=folder)
     check("Traceback" not in result.stderr and "Traceback" not in result.stdout,
           "consistent-remesh printed a traceback:\n" + result.stderr)
     report = None
@@ -371,7 +374,7 @@ def case_collection(tmp):
           "blend.vtp with weights (1, 0, ...) is not Spot's remesh: %g away" % max_difference(blend, spot_remesh))
     check(max_difference(corners[0], spot_remesh) <= 1e-9 * size(spot_remesh),
           "the blend grid's corner (1, 0, 0) is not Spot's remesh")
-    pictures = ["mean.png", "pca-modes.png", "blend-grid.png", "blend.png"] + \
+    pictures = ["inputs.png", "remeshes.png", "mean.png", "pca-modes.png", "blend-grid.png", "blend.png"] + \
         ["%s.from-spot.png" % name for name in names[1:]]
     if PICTURES:
         check_pictures(out, report, stdout, pictures, mode_rows=3, grid_models=3)
@@ -677,6 +680,7 @@ def check_pictures(out, report, stdout, files, mode_rows, grid_models):
     check_equal(renders["files"], files, "pictures")
     check(renders["seconds"] > 0, "render seconds")
     check_contains(stdout, "pictures: %d PNGs" % len(files), "summary")
+    check_overview_pictures(out, len(report["remesh"]["models"]))
     mean = read_png(os.path.join(out, "mean.png"))
     check(covered(mean) > 0.1, "mean.png: the shape covers %.1f%% of the picture" % (100 * covered(mean)))
     modes = read_png(os.path.join(out, "pca-modes.png"))
@@ -709,6 +713,21 @@ def check_pictures(out, report, stdout, files, mode_rows, grid_models):
             shutil.copy(os.path.join(out, name), KEEP_PICTURES)
 
 
+def check_overview_pictures(out, models):
+    """inputs.png and remeshes.png: one model per cell, three to a row,
+    each in several patch colours; no cell beyond the last model."""
+    rows = -(-models // 3)
+    for name in ("inputs.png", "remeshes.png"):
+        layout = cells(read_png(os.path.join(out, name)), min(models, 3), rows)
+        for (column, row), cell in layout.items():
+            if row * 3 + column < models:
+                check(covered(cell) > 0.03, "%s: cell (%d, %d) is almost empty" % (name, column, row))
+                check(colours(cell) > 12, "%s: cell (%d, %d) has %d colours, not patches"
+                      % (name, column, row, colours(cell)))
+            else:
+                check(covered(cell) == 0, "%s: cell (%d, %d) should be empty" % (name, column, row))
+
+
 def check_texture_fallbacks(tmp):
     """Where a source's texture image is looked for (STEM_texture.png, else
     the map_Kd of the OBJ's materials), and what a transfer picture shows
@@ -734,10 +753,11 @@ def check_texture_fallbacks(tmp):
     status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--level", "2", "--transfer-from", "cow"], out)
     check_equal(status, 0, "checkerboard run: exit status (stderr: %s)" % stderr)
     renders = report.get("renders", {})
-    check_equal(renders.get("files"), ["381.from-cow.png", "382.from-cow.png"], "checkerboard run: pictures")
+    check_equal(renders.get("files"), ["inputs.png", "remeshes.png", "381.from-cow.png", "382.from-cow.png"],
+                "checkerboard run: pictures")
     check("checkerboard" in " ".join(renders.get("notes", [])), "no note on the checkerboard: %r" % renders)
     check_contains(stdout, "note: no texture image beside " + cow, "summary")
-    for name in renders["files"]:
+    for name in renders["files"][2:]:
         pixels = read_png(os.path.join(out, name)).astype(int)
         # The checkerboard's dark squares are blue; the plain surface has none.
         blue = ((pixels[:, :, 2] > pixels[:, :, 0] + 40) & (pixels[:, :, 2] > 90)).mean()
@@ -922,7 +942,9 @@ def case_argument_errors(tmp):
          "--base-domain-from 2: give the 0-based index of one of the 2 meshes (0 to 1)"),
         (["--mesh", a, "--landmarks", la, "--base-domain-from", "-1"], "--base-domain-from -1"),
         (["--mesh", a, "--landmarks", la, "--base-domain", a, "--base-domain-from", "0"], "not allowed with"),
-        ([], "at least one --mesh"),
+        (["--landmarks", la], "at least one --mesh"),
+        (["--collection", os.path.join(tmp, "nowhere")], "cannot read the collection description"),
+        (["--collection", tmp, "--mesh", a, "--landmarks", la], "give a collection or models, not both"),
         (["--mesh", a, "--landmarks", la, "--mesh", os.path.join(tmp, "other", "a.obj"), "--landmarks", lb],
          "two meshes share the name a"),
         (["--mesh", a, "--landmarks", la, "--level", "9"], "--level 9: give a level from 0 to 8"),
@@ -1045,7 +1067,91 @@ def case_shipped_examples(tmp):
         check_pictures_skipped(out, report, stdout, reason)
 
 
+QUADRUPEDS = [("triceratops", 2832), ("camel", 9770), ("bull", 6200), ("bear", 13826), ("bear_bis", 10096)]
+
+
+def case_default_collection(tmp):
+    """consistent-remesh with no arguments, as a new user runs it: the CGAL
+    quadrupeds unpacked from libcgal-demo into a fresh cache, remeshed with
+    one connectivity, averaged, analysed, blended and textured, into
+    ./results with a report that shows the pictures. Then the cache is
+    reused, a damaged cached mesh unpacked again, and a missing or changed
+    archive refused."""
+    cache = os.path.join(tmp, "cache")
+    status, stdout, stderr, _ = run_cli([], environment={"CMP_CACHE_DIR": cache}, folder=tmp)
+    check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
+    out = os.path.join(tmp, "results")
+    with open(os.path.join(out, "report.json")) as f:
+        report = json.load(f)
+    names = [name for name, _ in QUADRUPEDS]
+    check_contains(stdout, "unpacking 5 meshes", "first run")
+    check_equal(report["failed"], [], "failed models")
+    check_equal(list(report["models"]), names, "models in the collection's order")
+    for name, vertices in QUADRUPEDS:
+        check_equal(report["models"][name]["vertices"], vertices, name + " vertices")
+        check_contains(stdout, "[%d/5] %s: straightened in" % (names.index(name) + 1, name), "progress")
+    check_equal(report["base_domain"]["vertices"], 21, "the shipped base domain")
+    check_remeshed(out, report, stdout, names, 4)
+    check_pca(out, report, stdout, names, 3)
+    check_blend_grid(out, report, stdout, names[:3])
+    transfer = report.get("transfer", {})
+    check_equal(sorted(transfer.get("targets", {})), sorted(names[1:]), "texture transfer targets")
+    check("cylindrical" in transfer.get("texture_coordinates", ""), "transfer: %r" % transfer)
+    for target in names[1:]:
+        surface = read_vtp(os.path.join(out, "%s.from-triceratops.vtp" % target))
+        check(surface.GetPointData().GetTCoords() is not None, target + ": no texture coordinates transferred")
+    pictures = ["inputs.png", "remeshes.png", "mean.png", "pca-modes.png", "blend-grid.png"] + \
+        ["%s.from-triceratops.png" % name for name in names[1:]]
+    check_report_pages(out, names, pictures if PICTURES else [])
+    if PICTURES:
+        check_equal(report["renders"].get("files"), pictures, "pictures")
+        check_overview_pictures(out, len(names))
+        if KEEP_PICTURES:
+            os.makedirs(KEEP_PICTURES, exist_ok=True)
+            for name in pictures + ["report.md", "report.html"]:
+                shutil.copy(os.path.join(out, name), KEEP_PICTURES)
+
+    again = ["--no-render", "--level", "1", "--output", os.path.join(tmp, "again")]
+    status, stdout, stderr, _ = run_cli(again, environment={"CMP_CACHE_DIR": cache})
+    check(status == 0 and "unpacking" not in stdout, "second run: status %d, unpacked again: %s" % (status, stdout))
+    with open(os.path.join(cache, "cgal-quadrupeds", "camel.off"), "w") as damaged:
+        damaged.write("OFF\n0 0 0\n")
+    status, stdout, stderr, _ = run_cli(again, environment={"CMP_CACHE_DIR": cache})
+    check(status == 0 and "unpacking 1 mesh " in stdout, "damaged cache: status %d, %s" % (status, stdout))
+
+    fresh = {"CMP_CACHE_DIR": os.path.join(tmp, "fresh-cache")}
+    missing = dict(fresh, CMP_CGAL_DATA_ARCHIVE=os.path.join(tmp, "nowhere.tar.gz"))
+    status, stdout, stderr, _ = run_cli(again, environment=missing)
+    check_equal(status, 4, "missing archive: exit status")
+    check_contains(stderr, "CMP_CGAL_DATA_ARCHIVE=%s: no such file" % missing["CMP_CGAL_DATA_ARCHIVE"], "missing archive")
+    changed = os.path.join(tmp, "changed.tar.gz")
+    with tarfile.open(changed, "w:gz") as archive:
+        octahedron = os.path.join(tmp, "octahedron.off")
+        write_off(octahedron, OCTAHEDRON_POINTS, OCTAHEDRON_TRIANGLES)
+        for name in names:
+            archive.add(octahedron, "data/meshes/%s.off" % name)
+    status, stdout, stderr, _ = run_cli(again, environment=dict(fresh, CMP_CGAL_DATA_ARCHIVE=changed))
+    check_equal(status, 4, "changed archive: exit status")
+    check_contains(stderr, "data/meshes/triceratops.off in libcgal-demo is not the mesh this collection's landmarks "
+                   "were picked on", "changed archive")
+
+
+def check_report_pages(out, names, pictures):
+    """report.md and report.html: a row per model, every picture shown, and
+    nothing shown that is not there."""
+    for page, image in (("report.md", r"!\[[^]]*\]\(([^)]+)\)"), ("report.html", r'<img src="([^"]+)"')):
+        with open(os.path.join(out, page)) as f:
+            text = f.read()
+        shown = re.findall(image, text)
+        check_equal(shown, pictures, page + ": pictures")
+        for name in names:
+            row = "| %s |" % name if page == "report.md" else "<td>%s</td>" % name
+            check_contains(text, row, page + ": the row of " + name)
+        check("failed" not in text.lower(), page + " says something failed")
+
+
 CASES = {
+    "default-collection": case_default_collection,
     "shipped-examples": case_shipped_examples,
     "collection": case_collection,
     "given-base-domain": case_given_base_domain,
@@ -1069,7 +1175,7 @@ def main():
     PICTURES = args.pictures
     KEEP_PICTURES = args.keep_pictures
     check(os.access(COMMAND, os.X_OK), "%s is not an executable" % COMMAND)
-    if args.case != "argument-errors":
+    if args.case not in ("argument-errors", "default-collection"):
         check(DATA and os.path.isdir(DATA), "this case needs --data")
     with tempfile.TemporaryDirectory(prefix="cmp-cli-") as tmp:
         CASES[args.case](tmp)

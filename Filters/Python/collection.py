@@ -1,0 +1,159 @@
+"""Collections described by a collection.json: the meshes (read from a
+Debian package's archive), their landmark files, a base domain and the
+stages to run. `consistent-remesh` with no --mesh runs the default one, the
+CGAL quadrupeds of Data/cgal-quadrupeds, which the package carries in
+consistent_mesh/data.
+
+collection.json:
+  title, description        text for the report
+  archive.package           the Debian package that installs the archive
+  archive.paths             where the archive may be (the first that exists)
+  models[]: name, member    the mesh's path inside the archive
+            landmarks       landmark file, relative to the folder
+            sha256          of the mesh as unpacked: a changed package is an error
+  base_domain               relative to the folder
+  stages                    level, pca, blend, transfer_from, view_up
+
+The meshes are unpacked once into a cache folder ($CMP_CACHE_DIR, else
+$XDG_CACHE_HOME/consistent-mesh, else ~/.cache/consistent-mesh) and checked
+against their SHA-256 every run. $CMP_CGAL_DATA_ARCHIVE names the archive
+where the package's path is not (see Data/cgal-quadrupeds/README.md for
+slim container images).
+"""
+
+import hashlib
+import json
+import os
+import tarfile
+import tempfile
+
+MANIFEST = "collection.json"
+DEFAULT_COLLECTION = "cgal-quadrupeds"
+ARCHIVE_VARIABLE = "CMP_CGAL_DATA_ARCHIVE"
+
+
+class CollectionError(Exception):
+    """A collection cannot be used; the message says why and what to do."""
+
+
+def default_folder():
+    """The default collection's folder inside the package."""
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", DEFAULT_COLLECTION)
+
+
+def cache_folder():
+    """Where unpacked meshes are kept between runs."""
+    if os.environ.get("CMP_CACHE_DIR"):
+        return os.environ["CMP_CACHE_DIR"]
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(base, "consistent-mesh")
+
+
+class Collection:
+    """A collection.json read and checked: its models' mesh paths (in the
+    cache) and landmark paths, its base domain and its stages."""
+
+    def __init__(self, folder):
+        self.folder = os.path.abspath(folder)
+        path = os.path.join(self.folder, MANIFEST)
+        try:
+            with open(path) as manifest:
+                description = json.load(manifest)
+        except OSError as error:
+            raise CollectionError("cannot read the collection description %s: %s" % (path, error.strerror))
+        except ValueError as error:
+            raise CollectionError("%s is not valid JSON: %s" % (path, error))
+        try:
+            self.title = str(description["title"])
+            self.description = str(description.get("description", ""))
+            self.package = str(description["archive"]["package"])
+            self.archive_paths = [str(p) for p in description["archive"]["paths"]]
+            self.models = [(str(m["name"]), str(m["member"]), str(m["landmarks"]), str(m["sha256"]))
+                           for m in description["models"]]
+            self.base_domain = os.path.join(self.folder, str(description["base_domain"]))
+            self.stages = dict(description.get("stages", {}))
+        except (KeyError, TypeError) as error:
+            raise CollectionError("%s lacks an entry or has one of the wrong kind: %s" % (path, error))
+        if not self.models:
+            raise CollectionError("%s lists no models" % path)
+        self.cache = os.path.join(cache_folder(), os.path.basename(self.folder))
+
+    def mesh_paths(self):
+        """Where each model's mesh is once unpacked (named after the model,
+        which is what names its results)."""
+        return [os.path.join(self.cache, name + os.path.splitext(member)[1]) for name, member, _, _ in self.models]
+
+    def landmark_paths(self):
+        return [os.path.join(self.folder, landmarks) for _, _, landmarks, _ in self.models]
+
+    def find_archive(self):
+        """The archive's path, or CollectionError naming the package to
+        install."""
+        override = os.environ.get(ARCHIVE_VARIABLE)
+        candidates = [override] if override else self.archive_paths
+        for candidate in candidates:
+            if os.path.isfile(candidate):
+                return candidate
+        if override:
+            raise CollectionError("%s=%s: no such file" % (ARCHIVE_VARIABLE, override))
+        raise CollectionError(
+            "the default collection's meshes come from Debian's %s package, and %s is not there: install it "
+            "(apt-get install %s; ./setup.sh does), set %s to its data.tar.gz, or give your own models with "
+            "--mesh and --landmarks" % (self.package, " or ".join(self.archive_paths), self.package,
+                                        ARCHIVE_VARIABLE))
+
+    def unpack(self, progress=print):
+        """Unpacks the meshes that are not in the cache yet (or no longer
+        match their SHA-256) and returns their paths."""
+        paths = self.mesh_paths()
+        wanted = {member: (path, digest) for (_, member, _, digest), path in zip(self.models, paths)
+                  if _sha256(path) != digest}
+        if wanted:
+            archive = self.find_archive()
+            progress("unpacking %d mesh%s from %s into %s"
+                     % (len(wanted), "" if len(wanted) == 1 else "es", archive, self.cache))
+            _extract(archive, wanted, self.cache)
+        for (name, member, _, digest), path in zip(self.models, paths):
+            if _sha256(path) != digest:
+                raise CollectionError("%s in %s is not the mesh this collection's landmarks were picked on (its "
+                                      "SHA-256 differs): the package has changed" % (member, self.package))
+        return paths
+
+
+def _sha256(path):
+    """The file's SHA-256 in hex, or None if it cannot be read."""
+    digest = hashlib.sha256()
+    try:
+        with open(path, "rb") as data:
+            for block in iter(lambda: data.read(1 << 20), b""):
+                digest.update(block)
+    except OSError:
+        return None
+    return digest.hexdigest()
+
+
+def _extract(archive, wanted, folder):
+    """Copies the archive members `wanted` (member -> (path, _)) to their
+    paths, each through a temporary file so that an interrupted run leaves
+    no half mesh behind; one pass over the compressed archive."""
+    try:
+        os.makedirs(folder, exist_ok=True)
+        with tarfile.open(archive, "r:*") as tar:
+            remaining = dict(wanted)
+            for member in tar:
+                if member.name not in remaining:
+                    continue
+                path, _ = remaining.pop(member.name)
+                source = tar.extractfile(member)
+                if source is None:
+                    raise CollectionError("%s in %s is not a file" % (member.name, archive))
+                handle, temporary = tempfile.mkstemp(dir=folder, suffix=".part")
+                with os.fdopen(handle, "wb") as out:
+                    out.write(source.read())
+                os.replace(temporary, path)
+                if not remaining:
+                    break
+    except (OSError, tarfile.TarError) as error:
+        raise CollectionError("cannot unpack the meshes from %s into %s: %s" % (archive, folder, error))
+    if remaining:
+        raise CollectionError("%s has no %s" % (archive, ", ".join(sorted(remaining))))

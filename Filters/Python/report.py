@@ -1,0 +1,258 @@
+"""report.md and report.html: what a consistent-remesh run did, for people.
+
+Both are made from one list of blocks (headings, paragraphs, tables,
+pictures) built from the run's report.json content, so they say the same.
+The pictures are the PNGs beside them, linked by file name, so the folder
+can be moved or shared as a whole.
+"""
+
+import html
+import os
+import time
+
+FILES = ("report.md", "report.html")
+
+
+class Heading:
+    def __init__(self, text):
+        self.text = text
+
+
+class Paragraph:
+    def __init__(self, text):
+        self.text = text
+
+
+class Table:
+    def __init__(self, header, rows):
+        self.header = header
+        self.rows = rows
+
+
+class Picture:
+    def __init__(self, file, caption):
+        self.file = file
+        self.caption = caption
+
+
+def write(report, output_folder):
+    """Writes report.md and report.html into `output_folder`."""
+    blocks = build(report)
+    with open(os.path.join(output_folder, FILES[0]), "w") as out:
+        out.write(markdown(blocks))
+    with open(os.path.join(output_folder, FILES[1]), "w") as out:
+        out.write(html_page(blocks, _title(report)))
+
+
+def _title(report):
+    data = report.get("collection")
+    return "Consistent remeshing" + (": %s" % data["title"] if data else "")
+
+
+def build(report):
+    """The report's blocks, in reading order."""
+    blocks = [Heading(_title(report))]
+    data = report.get("collection")
+    if data:
+        blocks.append(Paragraph("%s. The meshes were unpacked to %s." % (data["description"], data["meshes"])))
+    blocks.append(Paragraph("Command: `%s`, run on %s." % (" ".join(report.get("command", [])),
+                                                            time.strftime("%Y-%m-%d %H:%M"))))
+    blocks += _summary(report)
+    blocks += _models(report)
+    pictures = report.get("renders", {})
+    drawn = set(pictures.get("files", []))
+    if "skipped" in pictures:
+        blocks.append(Paragraph("No pictures: %s." % pictures["skipped"]))
+    blocks += _section("Patch layouts", drawn, "inputs.png",
+                       "Each model's surface cut into the patches of the base domain's triangles, with the "
+                       "straightened net drawn over it. A patch has the same colour on every model.")
+    blocks += _section("Remeshes", drawn, "remeshes.png",
+                       "The semi-regular remeshes: vertex k of one is vertex k of every other. Colours are the base "
+                       "triangles, as above.")
+    blocks += _pca(report, drawn)
+    blocks += _blends(report, drawn)
+    blocks += _transfer(report, drawn)
+    blocks += _details(report)
+    for note in pictures.get("notes", []):
+        blocks.append(Paragraph("Note: %s." % note))
+    for name, error in pictures.get("errors", {}).items():
+        blocks.append(Paragraph("%s could not be drawn: %s." % (name, error)))
+    return blocks
+
+
+def _summary(report):
+    models = report["models"]
+    ok = [name for name, model in models.items() if model.get("status") == "ok"]
+    lines = []
+    remesh = report.get("remesh", {})
+    if "vertices" in remesh:
+        adaptive = ", adaptive (tolerance %g)" % remesh["adaptive_tolerance"] if remesh["adaptive_tolerance"] else ""
+        lines.append("%d of %d models remeshed with one connectivity: level %d%s, %d vertices and %d triangles "
+                     "each, in %.2f s." % (len(ok), len(models), remesh["level"], adaptive, remesh["vertices"],
+                                           remesh["triangles"], remesh["seconds"]))
+    elif "error" in remesh:
+        lines.append("Remeshing the collection failed: %s." % remesh["error"])
+    domain = report.get("base_domain", {})
+    if "error" in domain:
+        lines.append("No base domain: %s." % domain["error"])
+    else:
+        angle = ", smallest angle %.2f°" % domain["min_angle_degrees"] if "min_angle_degrees" in domain else ""
+        lines.append("Base domain: %d vertices, %d triangles, %d edges%s (%s)."
+                     % (domain["vertices"], domain["triangles"], domain["edges"], angle, domain["source"]))
+    seconds = sum(sum(model["seconds"].values()) for model in models.values())
+    lines.append("Reading, tracing, straightening and remeshing took %.1f s over all models." % seconds)
+    if report.get("failed"):
+        lines.append("**Failed:** %s." % ", ".join(report["failed"]))
+    return [Heading("Summary")] + [Paragraph(line) for line in lines]
+
+
+def _models(report):
+    header = ["model", "vertices", "triangles", "net / √area, traced", "straightened", "flipped parameter triangles",
+              "Hausdorff / diagonal", "flipped remesh triangles", "seconds", "result"]
+    rows = []
+    for name, model in report["models"].items():
+        remesh = model.get("remesh", {})
+        hausdorff = remesh.get("hausdorff_per_diagonal")
+        rows.append([
+            name, model.get("vertices", "-"), model.get("triangles", "-"),
+            model.get("net", {}).get("length_per_sqrt_area", "-"),
+            model.get("straighten", {}).get("net_length_per_sqrt_area_after", "-"),
+            model.get("straighten", {}).get("flipped_triangles", "-"),
+            "-" if hausdorff is None else "%.2f %%" % (100 * hausdorff),
+            remesh.get("flipped_triangles", "-"),
+            "%.2f" % sum(model["seconds"].values()),
+            "ok" if model.get("status") == "ok" else "failed: %s" % model.get("error", ""),
+        ])
+    return [Heading("Models"), Table(header, rows)]
+
+
+def _section(title, drawn, file, text):
+    if file not in drawn:
+        return []
+    return [Heading(title), Paragraph(text), Picture(file, title)]
+
+
+def _pca(report, drawn):
+    pca = report.get("pca")
+    if pca is None:
+        return []
+    blocks = [Heading("Mean and modes of variation")]
+    if "error" in pca:
+        return blocks + [Paragraph("Failed: %s." % pca["error"])]
+    blocks.append(Paragraph("The mean of the %d models after %s alignment (%d iterations), and %d modes that "
+                            "explain %.1f %% of the variance."
+                            % (len(pca["models"]), pca["alignment"], pca["alignment_iterations"], pca["modes"],
+                               100 * pca["explained_variance"])))
+    rows = [["Mode%d" % k, "%.6g" % v, "%.6g" % d, "%.1f %%" % (100 * r)]
+            for k, (v, d, r) in enumerate(zip(pca["variances"], pca["standard_deviations"],
+                                              pca["explained_variance_ratios"]))]
+    blocks.append(Table(["mode", "variance", "standard deviation", "explained"], rows))
+    for file, caption in (("mean.png", "The mean shape"),
+                          ("pca-modes.png", "The mean moved by -2, 0 and +2 standard deviations along each mode")):
+        if file in drawn:
+            blocks.append(Picture(file, caption))
+    return blocks
+
+
+def _blends(report, drawn):
+    blocks = []
+    grid = report.get("blend_grid")
+    if grid is not None:
+        blocks.append(Heading("Blends"))
+        if "error" in grid:
+            blocks.append(Paragraph("Failed: %s." % grid["error"]))
+        else:
+            blocks.append(Paragraph("%d blends of %s (%s alignment): the corners are the models, every other "
+                                    "shape a weighted average of their remeshes, vertex by vertex."
+                                    % (grid["blends"], ", ".join(grid["models"]), grid["alignment"])))
+            if "blend-grid.png" in drawn:
+                blocks.append(Picture("blend-grid.png", "Blends"))
+    blend = report.get("blend")
+    if blend is not None:
+        weights = ", ".join("%s %g" % item for item in blend["weights"].items())
+        blocks.append(Heading("Blend with weights %s" % weights))
+        if "error" in blend:
+            blocks.append(Paragraph("Failed: %s." % blend["error"]))
+        elif "blend.png" in drawn:
+            blocks.append(Picture("blend.png", "Blend"))
+    return blocks
+
+
+def _transfer(report, drawn):
+    transfer = report.get("transfer")
+    if transfer is None:
+        return []
+    blocks = [Heading("Texture transfer from %s" % transfer["source"])]
+    if "error" in transfer:
+        return blocks + [Paragraph("Failed: %s." % transfer["error"])]
+    text = "%s's texture coordinates and point arrays carried onto every other remesh" % transfer["source"]
+    if "texture_coordinates" in transfer:
+        text += " (texture coordinates %s)" % transfer["texture_coordinates"]
+    if "texture_coordinates" in transfer:
+        text += ", drawn as a checkerboard: a square covers the same part of every model"
+    blocks.append(Paragraph(text + "."))
+    for target in transfer["targets"]:
+        file = "%s.from-%s.png" % (target, transfer["source"])
+        if file in drawn:
+            blocks.append(Picture(file, "%s's texture on %s" % (transfer["source"], target)))
+    return blocks
+
+
+def _details(report):
+    details = report.get("details")
+    if details is None:
+        return []
+    blocks = [Heading("Detail transfer from %s" % details["source"])]
+    if "error" in details:
+        return blocks + [Paragraph("Failed: %s." % details["error"])]
+    files = ", ".join(target["file"] for target in details["targets"].values())
+    return blocks + [Paragraph("Every other model's levels 0 to %d with %s's finer wavelet details: %s."
+                               % (details["last_coarse_level"], details["source"], files))]
+
+
+def markdown(blocks):
+    lines = []
+    for block in blocks:
+        if isinstance(block, Heading):
+            lines.append(("# " if not lines else "## ") + block.text)
+        elif isinstance(block, Paragraph):
+            lines.append(block.text)
+        elif isinstance(block, Table):
+            lines.append("| " + " | ".join(block.header) + " |")
+            lines.append("|" + "---|" * len(block.header))
+            lines += ["| " + " | ".join(str(cell).replace("|", "\\|") for cell in row) + " |" for row in block.rows]
+        elif isinstance(block, Picture):
+            lines.append("![%s](%s)" % (block.caption, block.file))
+        lines.append("")
+    return "\n".join(lines)
+
+
+def html_page(blocks, title):
+    body = []
+    for index, block in enumerate(blocks):
+        if isinstance(block, Heading):
+            tag = "h1" if index == 0 else "h2"
+            body.append("<%s>%s</%s>" % (tag, html.escape(block.text), tag))
+        elif isinstance(block, Paragraph):
+            body.append("<p>%s</p>" % _inline_html(block.text))
+        elif isinstance(block, Table):
+            head = "".join("<th>%s</th>" % html.escape(str(cell)) for cell in block.header)
+            rows = "".join("<tr>%s</tr>" % "".join("<td>%s</td>" % html.escape(str(cell)) for cell in row)
+                           for row in block.rows)
+            body.append("<table><tr>%s</tr>%s</table>" % (head, rows))
+        elif isinstance(block, Picture):
+            body.append('<figure><img src="%s" alt="%s"><figcaption>%s</figcaption></figure>'
+                        % (html.escape(block.file), html.escape(block.caption), html.escape(block.caption)))
+    style = ("body{font-family:sans-serif;max-width:1250px;margin:2em auto;color:#222}"
+             "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
+             "td:first-child,th{text-align:left}img{max-width:100%}figcaption{color:#555}")
+    return ("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>%s</title><style>%s</style></head>\n"
+            "<body>\n%s\n</body></html>\n" % (html.escape(title), style, "\n".join(body)))
+
+
+def _inline_html(text):
+    """Markdown's `code` and **bold** of a paragraph, in HTML."""
+    parts = html.escape(text).split("`")
+    text = "".join("<code>%s</code>" % part if index % 2 else part for index, part in enumerate(parts))
+    parts = text.split("**")
+    return "".join("<b>%s</b>" % part if index % 2 else part for index, part in enumerate(parts))
