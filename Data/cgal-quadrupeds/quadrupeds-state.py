@@ -81,23 +81,22 @@ remesher = function("SemiRegularRemesher")(registrationName="Semi-Regular Remesh
 pca = function("MeshPCA")(registrationName="Mesh PCA", Input=remesher, NumberOfModes=3)
 function("ShapeBlend")(registrationName="Shape Blend", Input=remesher, Weights=[0.5, 0.25, 0.25, 0.0, 0.0])
 
-# The first model's straightened surface and net, picked out of the collection.
-first = ExtractBlock(registrationName="%s patches" % names[0], Input=straightener,
-                     Selectors=["/Root/%s" % names[0]])
-first_net = ExtractBlock(registrationName="%s net" % names[0], Input=OutputPort(straightener, 1),
-                         Selectors=["/Root/%s" % names[0]])
 
 
-def view_of(sources_and_styles, camera_direction):
+def view_of(sources_and_styles, camera_direction, block=None):
     """A white render view showing each (source, style); style "patches"
     colours by PatchId, "edges" also shows the triangles, "lines" is a
-    black net."""
+    black net. `block`: the one block of a collection to show (a display
+    setting: an Extract Block filter would do as well, but the GUI takes
+    its block list for an edit not yet applied)."""
     view = CreateView("RenderView")
     view.Background = [1.0, 1.0, 1.0]
     view.UseColorPaletteForBackground = 0
     view.OrientationAxesVisibility = 0
     for source, style in sources_and_styles:
         display = Show(source, view)
+        if block is not None:
+            display.BlockSelectors = ["/Root/" + block]
         if style == "lines":
             display.ColorArrayName = [None, ""]
             display.AmbientColor = display.DiffuseColor = [0.1, 0.1, 0.1]
@@ -115,20 +114,23 @@ def view_of(sources_and_styles, camera_direction):
     view.CameraPosition = camera_direction
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.ResetCamera(False)
     return view
 
 
-# The GUI starts with a layout holding one empty view; pvpython has none.
+# The GUI starts with a layout holding one empty view (reused); pvpython has
+# none.
 for view in list(GetViews()):
     Delete(view)
-for old in list(GetLayouts().values()):
-    RemoveLayout(old)
-layout = CreateLayout("Consistent Mesh")
-left = view_of([(first, "patches"), (first_net, "lines")], [0.3, 0.35, 1.0])
+layouts = list(GetLayouts().values())
+layout = layouts[0] if layouts else CreateLayout("Consistent Mesh")
+# The first model's straightened surface and net, and the collection's mean.
+left = view_of([(straightener, "patches"), (OutputPort(straightener, 1), "lines")], [0.3, 0.35, 1.0],
+               block=names[0])
 right = view_of([(OutputPort(pca, 0), "edges")], [0.3, 0.35, 1.0])
 layout.SplitHorizontal(0, 0.5)
 layout.AssignView(1, left)
 layout.AssignView(2, right)
+for view in (left, right):
+    view.ResetCamera(False)
 SetActiveView(right)
-SetActiveSource(pca)
+SetActiveSource(remesher)
