@@ -31,6 +31,23 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+# The default collection's meshes are libcgal-demo's data.tar.gz under
+# /usr/share/doc. Images that drop /usr/share/doc (a dpkg path-exclude, as
+# in slim containers) install the package without it: then unpack the
+# package itself where Data/cgal-quadrupeds/collection.json also looks.
+cgal_archive=/usr/share/doc/libcgal-dev/data.tar.gz
+cgal_fallback=/usr/local/share/consistent-mesh/libcgal-demo
+if [ ! -f "$cgal_archive" ] && [ ! -f "$cgal_fallback$cgal_archive" ]; then
+  echo "setup: $cgal_archive is missing (documentation excluded?): unpacking libcgal-demo into $cgal_fallback"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  download=$(mktemp -d)
+  (cd "$download" && apt-get download -qq libcgal-demo)
+  "${sudo_cmd[@]}" mkdir -p "$cgal_fallback"
+  "${sudo_cmd[@]}" dpkg -x "$download"/libcgal-demo_*.deb "$cgal_fallback"
+  rm -rf "$download"
+fi
+
 build_dir="${CMP_BUILD_DIR:-build}"
 # /usr/bin/python3 sees Debian's ParaView modules; a pyenv shim on PATH does not.
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3
