@@ -113,6 +113,13 @@ class Model:
         self.curves = None  # the last net filter's curves
         self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
 
+    def without_own_name(self, message):
+        """`message` without the "NAME.off: " the filters put before their
+        messages about a surface read from a file: wherever the tool shows a
+        model's error, the model's name is already beside it."""
+        prefix = os.path.basename(self.mesh_path) + ": "
+        return message[len(prefix):] if message.startswith(prefix) else message
+
     def timed(self, stage, function, *args):
         start = time.perf_counter()
         try:
@@ -122,7 +129,7 @@ class Model:
 
     def fail(self, error):
         self.report["status"] = "failed"
-        self.report["error"] = str(error)
+        self.report["error"] = self.without_own_name(str(error))
         self.surface = None
         self.parameterized = None
 
@@ -1026,7 +1033,7 @@ def main(argv=None):
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
         except StageError as error:
             model.fail(error)
-            print("%s FAILED: %s" % (step, error), flush=True)
+            print("%s FAILED: %s" % (step, model.report["error"]), flush=True)
 
     # One run of the remesher for the whole collection: one connectivity.
     ready = [m for m in models if m.parameterized is not None]

@@ -31,7 +31,7 @@ int vtkCMPBaseDomainBuilder::RequestData(
   }
   if (!status.ok())
   {
-    vtkErrorMacro(<< status.message());
+    vtkErrorMacro(<< cmp::bridge::modelPrefix(input) << status.message());
     return 0;
   }
   output->ShallowCopy(cmp::bridge::toPolyData(domain));

@@ -1,5 +1,7 @@
 #include "vtkCMPCollection.h"
 
+#include "vtkCMPPolyDataBridge.h"
+
 #include <vtkCompositeDataSet.h>
 #include <vtkDataObjectTreeIterator.h>
 #include <vtkInformation.h>
@@ -34,7 +36,7 @@ Status collectSurfaces(vtkDataObject* input, SurfaceCollection& out, bool allowE
   if (auto* surface = vtkPolyData::SafeDownCast(input))
   {
     out.surfaces.push_back(surface);
-    out.labels.emplace_back();
+    out.labels.push_back(modelPrefix(surface));
     out.names.emplace_back();
     return {};
   }

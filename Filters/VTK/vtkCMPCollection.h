@@ -23,7 +23,8 @@ struct SurfaceCollection
 {
   std::vector<vtkPolyData*> surfaces; ///< Non-empty leaves (or the input itself).
   /// \brief Prefix naming each surface in messages: "block 2 ('387'): "
-  ///        for a multiblock leaf, "" for a single surface.
+  ///        for a multiblock leaf, "387.off: " for a single surface read
+  ///        from a file (its `SourceFile` field array), "" otherwise.
   std::vector<std::string> labels;
   /// \brief Block name of each surface ("" if none).
   std::vector<std::string> names;

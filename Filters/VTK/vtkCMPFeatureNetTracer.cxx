@@ -90,9 +90,10 @@ int vtkCMPFeatureNetTracer::RequestData(
   vtkPolyData* baseInput = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* surfaceOutput = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* curvesOutput = vtkPolyData::GetData(outputVector, 1);
+  const std::string model = cmp::bridge::modelPrefix(input);
   if (!baseInput)
   {
-    vtkErrorMacro("no base domain: connect L0 (for example from Base Domain Builder) to the second input");
+    vtkErrorMacro(<< model << "no base domain: connect L0 (for example from Base Domain Builder) to the second input");
     return 0;
   }
   cmp::TriangleMesh mesh;
@@ -115,13 +116,13 @@ int vtkCMPFeatureNetTracer::RequestData(
   }
   if (!status.ok())
   {
-    vtkErrorMacro(<< status.message());
+    vtkErrorMacro(<< model << status.message());
     return 0;
   }
   std::string problem;
   const bool valid = layoutIsValid(net, domain, problem);
   if (!valid)
-    vtkWarningMacro("the traced net failed the layout check: " << problem);
+    vtkWarningMacro(<< model << "the traced net failed the layout check: " << problem);
   surfaceOutput->ShallowCopy(refinedSurface(net, input));
   curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(net, domain));
   const double lengthPerSqrtArea = report.netLength / std::sqrt(cmp::surfaceArea(mesh));
@@ -134,6 +135,8 @@ int vtkCMPFeatureNetTracer::RequestData(
     cmp::bridge::setFieldValue(field, "RetracedCurves", report.retraced);
     cmp::bridge::setFieldValue(field, "PenalisedCurves", report.penalised);
     cmp::bridge::setFieldValue(field, "SplitEdges", report.splitEdges);
+    // The outputs are built anew: keep the model's name for the next filters.
+    cmp::bridge::copySourceFile(input, output);
   }
   this->UpdateProgress(1.0);
   return 1;

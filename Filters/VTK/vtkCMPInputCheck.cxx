@@ -59,7 +59,7 @@ int vtkCMPInputCheck::RequestData(vtkInformation*, vtkInformationVector** inputV
   this->LastError = status.message();
   if (!status.ok())
   {
-    vtkErrorMacro(<< status.message());
+    vtkErrorMacro(<< cmp::bridge::modelPrefix(surface) << status.message());
     return 0;
   }
   output->ShallowCopy(surface);

@@ -21,6 +21,7 @@ int vtkCMPLandmarkWriter::FillInputPortInformation(int, vtkInformation* info)
 void vtkCMPLandmarkWriter::WriteData()
 {
   auto* surface = vtkPolyData::SafeDownCast(this->GetInput());
+  const std::string model = cmp::bridge::modelPrefix(surface);
   if (this->FileName.empty())
   {
     vtkErrorMacro("no file name set");
@@ -29,13 +30,13 @@ void vtkCMPLandmarkWriter::WriteData()
   vtkDataArray* featureIds = surface ? surface->GetPointData()->GetArray(cmp::bridge::kFeatureIdArray) : nullptr;
   if (!featureIds)
   {
-    vtkErrorMacro("the surface has no FeatureId point array: mark its landmarks first");
+    vtkErrorMacro(<< model << "the surface has no FeatureId point array: mark its landmarks first");
     return;
   }
   cmp::TriangleMesh mesh;
   if (cmp::Status s = cmp::bridge::toTriangleMesh(surface, mesh); !s.ok())
   {
-    vtkErrorMacro(<< s.message());
+    vtkErrorMacro(<< model << s.message());
     return;
   }
   std::vector<int> values(featureIds->GetNumberOfTuples());
@@ -47,7 +48,7 @@ void vtkCMPLandmarkWriter::WriteData()
   if (status.ok())
     status = cmp::writeLandmarkFile(this->FileName, landmarks, mesh, fileToMeshPoint);
   if (!status.ok())
-    vtkErrorMacro(<< status.message());
+    vtkErrorMacro(<< model << status.message());
 }
 
 void vtkCMPLandmarkWriter::PrintSelf(ostream& os, vtkIndent indent)

@@ -17,15 +17,16 @@ int vtkCMPLandmarksFromFile::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const std::string model = cmp::bridge::modelPrefix(input);
   if (this->LandmarkFile.empty())
   {
-    vtkErrorMacro("no landmark file set");
+    vtkErrorMacro(<< model << "no landmark file set");
     return 0;
   }
   cmp::TriangleMesh mesh;
   if (cmp::Status s = cmp::bridge::toCheckedSurface(input, mesh); !s.ok())
   {
-    vtkErrorMacro(<< s.message());
+    vtkErrorMacro(<< model << s.message());
     return 0;
   }
   const std::vector<int> fileToMeshPoint = cmp::bridge::fileToMeshPointMap(input);
@@ -35,7 +36,7 @@ int vtkCMPLandmarksFromFile::RequestData(
     status = cmp::validateLandmarks(landmarks, mesh.vertexCount(), this->ExpectedLandmarkCount);
   if (!status.ok())
   {
-    vtkErrorMacro(<< status.message());
+    vtkErrorMacro(<< model << status.message());
     return 0;
   }
   output->ShallowCopy(input);

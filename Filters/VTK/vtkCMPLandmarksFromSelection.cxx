@@ -99,10 +99,11 @@ int vtkCMPLandmarksFromSelection::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkSelection* selection = vtkSelection::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const std::string model = cmp::bridge::modelPrefix(input);
   cmp::TriangleMesh mesh;
   if (cmp::Status s = cmp::bridge::toCheckedSurface(input, mesh); !s.ok())
   {
-    vtkErrorMacro(<< s.message());
+    vtkErrorMacro(<< model << s.message());
     return 0;
   }
   cmp::LandmarkList landmarks = this->PointIds;
@@ -110,23 +111,24 @@ int vtkCMPLandmarksFromSelection::RequestData(
   {
     if (!selection)
     {
-      vtkErrorMacro("no landmarks: select the landmark points (in order) or give PointIds");
+      vtkErrorMacro(<< model << "no landmarks: select the landmark points (in order) or give PointIds");
       return 0;
     }
     if (cmp::Status s = selectedPointIds(selection, input, landmarks); !s.ok())
     {
-      vtkErrorMacro(<< s.message());
+      vtkErrorMacro(<< model << s.message());
       return 0;
     }
     if (landmarks.empty())
     {
-      vtkErrorMacro("the selection holds no points: select the landmark points (in order) or give PointIds");
+      vtkErrorMacro(
+        << model << "the selection holds no points: select the landmark points (in order) or give PointIds");
       return 0;
     }
   }
   if (cmp::Status s = cmp::validateLandmarks(landmarks, mesh.vertexCount(), this->ExpectedLandmarkCount); !s.ok())
   {
-    vtkErrorMacro(<< s.message());
+    vtkErrorMacro(<< model << s.message());
     return 0;
   }
   output->ShallowCopy(input);

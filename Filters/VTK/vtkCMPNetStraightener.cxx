@@ -195,15 +195,16 @@ int vtkCMPNetStraightener::RequestData(
   vtkPolyData* baseInput = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* surfaceOutput = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* curvesOutput = vtkPolyData::GetData(outputVector, 1);
+  const std::string model = cmp::bridge::modelPrefix(input);
   if (!baseInput)
   {
-    vtkErrorMacro("no base domain: connect L0 (the one the net was traced against) to the second input");
+    vtkErrorMacro(<< model << "no base domain: connect L0 (the one the net was traced against) to the second input");
     return 0;
   }
   if (const std::string problem = propertyProblem(this->MaximumSweeps, this->Tolerance, this->SnapTolerance);
       !problem.empty())
   {
-    vtkErrorMacro(<< problem);
+    vtkErrorMacro(<< model << problem);
     return 0;
   }
   cmp::TriangleMesh mesh;
@@ -242,16 +243,16 @@ int vtkCMPNetStraightener::RequestData(
     status = cmp::parameterizePatches(straight.net, domain, parameterization);
   if (!status.ok())
   {
-    vtkErrorMacro(<< status.message());
+    vtkErrorMacro(<< model << status.message());
     return 0;
   }
   this->UpdateProgress(0.9);
 
   const std::string problem = layoutProblem(cmp::toLabelledSurface(straight.net, domain), domain);
   if (!problem.empty())
-    vtkWarningMacro("the straightened net failed the layout check: " << problem);
+    vtkWarningMacro(<< model << "the straightened net failed the layout check: " << problem);
   if (parameterization.flippedTriangles > 0)
-    vtkWarningMacro(<< parameterization.flippedTriangles
+    vtkWarningMacro(<< model << parameterization.flippedTriangles
                     << " triangles are flipped in their patch's map onto its base triangle");
 
   vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(straight.net.mesh.toTriangleMesh());
@@ -273,6 +274,8 @@ int vtkCMPNetStraightener::RequestData(
     cmp::bridge::setFieldValue(field, "SkippedStars", report.skippedStars);
     cmp::bridge::setFieldValue(field, "FlippedTriangles", parameterization.flippedTriangles);
     cmp::bridge::setFieldValue(field, "NetValid", problem.empty() ? 1 : 0);
+    // The outputs are built anew: keep the model's name for the remesher.
+    cmp::bridge::copySourceFile(input, output);
   }
   this->UpdateProgress(1.0);
   return 1;

@@ -6,6 +6,7 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
@@ -240,6 +241,33 @@ void setFieldString(vtkFieldData* fieldData, const char* name, const std::string
   array->SetName(name);
   array->InsertNextValue(value);
   fieldData->AddArray(array);
+}
+
+namespace
+{
+
+/// The value of `data`'s SourceFile field array, "" if it has none.
+std::string sourceFileOf(vtkDataObject* data)
+{
+  vtkFieldData* field = data ? data->GetFieldData() : nullptr;
+  auto* name = vtkStringArray::SafeDownCast(field ? field->GetAbstractArray(kSourceFileArray) : nullptr);
+  return name && name->GetNumberOfValues() > 0 ? name->GetValue(0) : std::string();
+}
+
+} // namespace
+
+std::string modelPrefix(vtkDataObject* data)
+{
+  const std::string name = sourceFileOf(data);
+  return name.empty() ? name : name + ": ";
+}
+
+void copySourceFile(vtkDataObject* from, vtkDataObject* to)
+{
+  // A new array rather than the input's, so that nothing done to the output
+  // reaches upstream data.
+  if (const std::string name = sourceFileOf(from); !name.empty() && to)
+    setFieldString(to->GetFieldData(), kSourceFileArray, name);
 }
 
 } // namespace cmp::bridge

@@ -11,6 +11,10 @@
 
 #include <vtkSmartPointer.h>
 
+#include <string>
+#include <vector>
+
+class vtkDataObject;
 class vtkIntArray;
 class vtkPolyData;
 class vtkDataSet;
@@ -23,6 +27,9 @@ namespace cmp::bridge
 constexpr const char* kFeatureIdArray = "FeatureId";
 /// \brief Name of the field array mapping a file's point ids to welded ids.
 constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
+/// \brief Name of the one-value field string array naming the file a surface
+///        was read from, without its folder (set by the surface reader).
+constexpr const char* kSourceFileArray = "SourceFile";
 /// \brief Name of the cell array of per-corner texture coordinates (6 values).
 constexpr const char* kCornerTCoordsArray = "CornerTCoords";
 /// \brief Name of the cell array holding the base triangle (patch) of each triangle.
@@ -79,5 +86,17 @@ void setFieldValue(vtkFieldData* fieldData, const char* name, double value);
 
 /// \brief Adds (or replaces) a one-value string array in field data.
 void setFieldString(vtkFieldData* fieldData, const char* name, const std::string& value);
+
+/// \brief The prefix naming the model in a filter's messages: "camel.off: "
+///        when `data` carries the `SourceFile` field array, "" otherwise.
+/// A per-surface filter run block by block on a multiblock is not told the
+/// block's name (VTK 9.2's composite pipeline hands it the leaf alone), so
+/// the file name travelling with the data is the only way to say which
+/// model of a collection an error is about.
+std::string modelPrefix(vtkDataObject* data);
+
+/// \brief Copies the `SourceFile` field array of `from` (if any) to `to`,
+///        for filters that build their output anew rather than copying the input.
+void copySourceFile(vtkDataObject* from, vtkDataObject* to);
 
 } // namespace cmp::bridge

@@ -278,6 +278,9 @@ public:
     progress(0.7);
 
     vtkFieldData* field = remesh->GetFieldData();
+    // The remesh is still that model: keep its name (never on the shared
+    // connectivity output, which is no model's).
+    cmp::bridge::copySourceFile(input_.input(), remesh);
     cmp::bridge::setFieldValue(field, "RemeshLevel", shared.mesh.level);
     cmp::bridge::setFieldValue(field, "VertexCount", shared.mesh.vertexCount());
     cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(shared.mesh.triangles.size()));

@@ -237,6 +237,11 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
     surface->GetFieldData()->AddArray(map);
   }
   cmp::bridge::setFieldValue(surface->GetFieldData(), "WeldedPointCount", welded);
+  // Names the model in the messages of the filters downstream (which see one
+  // block of a collection at a time, without its name); the folder is left
+  // out because it is the same for a whole collection and makes lines long.
+  cmp::bridge::setFieldString(surface->GetFieldData(), cmp::bridge::kSourceFileArray,
+    std::filesystem::path(this->FileName).filename().string());
   output->ShallowCopy(surface);
   this->UpdateProgress(1.0);
   return 1;

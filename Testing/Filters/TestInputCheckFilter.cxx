@@ -164,3 +164,19 @@ TEST(InputCheck, ChecksTheBaseDomainAgainstTheSurface)
   setFeatureIds(duplicate, { 0, 1, 2, 3, 4, 4 });
   expectFailure(check(surface, duplicate), "base domain: FeatureId 4 is on vertices 4 and 5");
 }
+
+// Per-surface messages name the file the surface was read from, so that a
+// failing model of a collection can be found; in-memory surfaces have none.
+TEST(InputCheckFilter, NamesTheSurfaceFile)
+{
+  vtkSmartPointer<vtkPolyData> read = surfaceFromOFF("check-named-octa.off", octahedronOFF());
+  RunResult result = check(read, nullptr, true);
+  EXPECT_FALSE(result.succeeded);
+  EXPECT_NE(result.error.find("): check-named-octa.off: missing point array 'FeatureId'"), std::string::npos)
+    << result.error;
+
+  read->GetFieldData()->RemoveArray("SourceFile");
+  result = check(read, nullptr, true);
+  EXPECT_FALSE(result.succeeded);
+  EXPECT_NE(result.error.find("): missing point array 'FeatureId'"), std::string::npos) << result.error;
+}
