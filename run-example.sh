@@ -10,7 +10,7 @@ cd "$(dirname "$0")"
 ./setup.sh
 
 output="${1:-results}"
-command=(build/bin/consistent-remesh --output "$output")
+command=("${CMP_BUILD_DIR:-build}/bin/consistent-remesh" --output "$output")
 # The pictures need an X display; a machine without one gets Xvfb's.
 if [ -z "${DISPLAY:-}" ]; then
   command=(xvfb-run -a "${command[@]}")

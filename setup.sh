@@ -42,10 +42,14 @@ if [ ! -f "$cgal_archive" ] && [ ! -f "$cgal_fallback$cgal_archive" ]; then
   sudo_cmd=()
   [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
   download=$(mktemp -d)
-  (cd "$download" && apt-get download -qq libcgal-demo)
+  trap 'rm -rf "$download"' EXIT
+  # Slim images may have emptied the package lists too.
+  if ! (cd "$download" && apt-get download -qq libcgal-demo); then
+    "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    (cd "$download" && apt-get download -qq libcgal-demo)
+  fi
   "${sudo_cmd[@]}" mkdir -p "$cgal_fallback"
   "${sudo_cmd[@]}" dpkg -x "$download"/libcgal-demo_*.deb "$cgal_fallback"
-  rm -rf "$download"
 fi
 
 build_dir="${CMP_BUILD_DIR:-build}"

@@ -24,7 +24,6 @@ import paraview.simple as simple
 HERE = os.path.dirname(os.path.abspath(__file__))
 BUILD = os.path.join(HERE, "..", "..", "build")
 PLUGIN = "ConsistentMeshParameterizations"
-LEVEL = 4
 
 
 def load_plugin():
@@ -47,7 +46,7 @@ def default_collection():
     folder, its meshes unpacked."""
     for site in sorted(glob.glob(os.path.join(BUILD, "lib", "python3*", "site-packages"))):
         if site not in sys.path:
-            sys.path.append(site)
+            sys.path.insert(0, site)
     try:
         from consistent_mesh import collection
     except ImportError as error:
@@ -77,9 +76,14 @@ group = GroupDatasets(registrationName="collection", Input=landmarked, BlockName
 tracer = function("FeatureNetTracer")(registrationName="Feature Net Tracer", Input=group, BaseDomain=base)
 straightener = function("NetStraightener")(registrationName="Net Straightener", Input=tracer, BaseDomain=base)
 remesher = function("SemiRegularRemesher")(registrationName="Semi-Regular Remesher", Input=straightener,
-                                           BaseDomain=base, Level=LEVEL)
-pca = function("MeshPCA")(registrationName="Mesh PCA", Input=remesher, NumberOfModes=3)
-function("ShapeBlend")(registrationName="Shape Blend", Input=remesher, Weights=[0.5, 0.25, 0.25, 0.0, 0.0])
+                                           BaseDomain=base, Level=data.stages.get("level", 4))
+pca = function("MeshPCA")(registrationName="Mesh PCA", Input=remesher, NumberOfModes=data.stages.get("pca", 3))
+# Half the first model, a quarter each of the next two: the collection's
+# blend grid's middle.
+function("ShapeBlend")(registrationName="Shape Blend", Input=remesher,
+                       Weights=[0.5, 0.25, 0.25] + [0.0] * (len(names) - 3))
+base.UpdatePipeline()
+patch_count = base.GetDataInformation().GetNumberOfCells()
 
 
 
@@ -105,7 +109,7 @@ def view_of(sources_and_styles, camera_direction, block=None):
         ColorBy(display, ("CELLS", "PatchId"))
         table = GetColorTransferFunction("PatchId")
         table.ApplyPreset("Rainbow Uniform", True)
-        table.RescaleTransferFunction(0.0, 37.0)
+        table.RescaleTransferFunction(0.0, patch_count - 1.0)
         HideScalarBarIfNotNeeded(table, view)
         display.SetScalarBarVisibility(view, False)
         if style == "edges":

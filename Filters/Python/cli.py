@@ -670,13 +670,13 @@ def make_overview_pictures(pictures, ready, remeshes):
 
     reference = correspondence(first)
     places = {m.name: render.similarity_to(correspondence(m), reference) for m in ready}
-    inputs = [(places[m.name](m.parameterized), places[m.name](m.curves), m.name, False) for m in ready]
-    view = pictures.view([surface for surface, _, _, _ in inputs])
+    inputs = [(places[m.name](m.parameterized), places[m.name](m.curves), m.name) for m in ready]
+    view = pictures.view([surface for surface, _, _ in inputs])
     pictures.make("inputs.png", render.picture_patches, inputs,
                   "The models and their patch layouts (a patch has one colour on every model)", view)
     if remesh:
         level = int(_field_reader(remesh[first.name])("RemeshLevel"))
-        remeshed = [(places[m.name](remesh[m.name]), None, m.name, False) for m in ready]
+        remeshed = [(places[m.name](remesh[m.name]), None, m.name) for m in ready]
         pictures.make("remeshes.png", render.picture_patches, remeshed,
                       "Remeshes of level %d: one connectivity, coloured by base triangle" % level, view)
 
@@ -725,14 +725,14 @@ def make_transfer_pictures(pictures, figures, source, remeshes):
         title = "%s's %%s on %s" % (source.name, target)
         if surface.GetPointData().GetTCoords() is not None:
             if texture is None:
-                if checker is None and "texture_coordinates" in figures:
-                    pictures.notes.append("%s has no texture: the cylindrical texture coordinates it got are drawn "
-                                          "with a checkerboard" % source.name)
-                    checker = render.checkerboard_texture()
-                elif checker is None:
-                    pictures.notes.append("no texture image beside %s (%s_texture.png or map_Kd of its .mtl): "
-                                          "its texture coordinates are drawn with a checkerboard"
-                                          % (source.mesh_path, source.name))
+                if checker is None:
+                    if "texture_coordinates" in figures:
+                        note = ("%s has no texture: the cylindrical texture coordinates it got are drawn with a "
+                                "checkerboard" % source.name)
+                    else:
+                        note = ("no texture image beside %s (%s_texture.png or map_Kd of its .mtl): its texture "
+                                "coordinates are drawn with a checkerboard" % (source.mesh_path, source.name))
+                    pictures.notes.append(note)
                     checker = render.checkerboard_texture()
                 pictures.make(name + ".png", render.picture_single, surface, title % "texture coordinates",
                               view, checker, None)
@@ -792,7 +792,9 @@ def _write_xml(writer, data, path):
     writer.SetFileName(path)
     writer.SetInputData(data)
     writer.SetDataModeToBinary()
-    if not writer.Write():
+    # VTK 9.2's XML writers return 1 even when the file cannot be opened;
+    # the error code tells.
+    if not writer.Write() or writer.GetErrorCode():
         raise StageError("cannot write '%s'" % path)
 
 
@@ -911,6 +913,24 @@ def parse_arguments(argv):
     return args
 
 
+def prepare_output_folder(folder):
+    """Creates `folder` if need be and makes sure files can be written in
+    it, before any work is done: None, or what is wrong."""
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError as error:
+        return "cannot create the output folder: %s" % error
+    # os.access says yes to root on a read-only file system: try a file.
+    probe = os.path.join(folder, ".consistent-remesh-write-test")
+    try:
+        with open(probe, "w"):
+            pass
+        os.remove(probe)
+    except OSError as error:
+        return "cannot write in the output folder %s: %s" % (folder, error.strerror or error)
+    return None
+
+
 def use_collection(parser, args):
     """Fills the models and, where not given, the options from a collection
     (the default one if --collection is not given); its meshes are only
@@ -972,12 +992,8 @@ def main(argv=None):
     # Errors are collected per model and reported once; the executive's
     # generic "returned failure" log lines would only repeat them.
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
-    try:
-        os.makedirs(args.output, exist_ok=True)
-    except OSError as error:
-        print("consistent-remesh: cannot create the output folder: %s" % error, file=sys.stderr)
-        return 2
     report = {"models": {}, "command": ["consistent-remesh"] + list(sys.argv[1:] if argv is None else argv)}
+    # The meshes first: a missing package leaves no empty output folder.
     if args.collection_data is not None:
         data = args.collection_data
         print("%s: %s" % (data.title, data.description), flush=True)
@@ -988,6 +1004,10 @@ def main(argv=None):
             return EXIT_NO_COLLECTION
         report["collection"] = {"title": data.title, "description": data.description, "folder": data.folder,
                                 "meshes": data.cache}
+    problem = prepare_output_folder(args.output)
+    if problem:
+        print("consistent-remesh: %s" % problem, file=sys.stderr)
+        return 2
     models = [Model(m, l) for m, l in zip(args.mesh, args.landmarks)]
 
     for index, model in enumerate(models):
@@ -1083,9 +1103,13 @@ def main(argv=None):
         report["models"][model.name] = model.report
     failed = [m.name for m in models if m.report.get("status") != "ok"]
     report["failed"] = failed
-    with open(os.path.join(args.output, "report.json"), "w") as out:
-        json.dump(report, out, indent=2)
-    written_report.write(report, args.output)
+    try:
+        with open(os.path.join(args.output, "report.json"), "w") as out:
+            json.dump(report, out, indent=2)
+        written_report.write(report, args.output)
+    except OSError as error:
+        print("consistent-remesh: cannot write the report: %s" % error, file=sys.stderr)
+        return 1
 
     print_summary(models, report)
     print("report: %s" % ", ".join(os.path.join(args.output, name)

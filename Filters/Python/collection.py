@@ -16,16 +16,18 @@ collection.json:
 
 The meshes are unpacked once into a cache folder ($CMP_CACHE_DIR, else
 $XDG_CACHE_HOME/consistent-mesh, else ~/.cache/consistent-mesh) and checked
-against their SHA-256 every run. $CMP_CGAL_DATA_ARCHIVE names the archive
-where the package's path is not (see Data/cgal-quadrupeds/README.md for
+against their SHA-256 every run. $CMP_CGAL_DATA_ARCHIVE, when set, is the
+archive, whatever archive.paths say (see Data/cgal-quadrupeds/README.md for
 slim container images).
 """
 
 import hashlib
 import json
 import os
+import re
 import tarfile
 import tempfile
+import zlib
 
 MANIFEST = "collection.json"
 DEFAULT_COLLECTION = "cgal-quadrupeds"
@@ -63,19 +65,34 @@ class Collection:
             raise CollectionError("cannot read the collection description %s: %s" % (path, error.strerror))
         except ValueError as error:
             raise CollectionError("%s is not valid JSON: %s" % (path, error))
-        try:
-            self.title = str(description["title"])
-            self.description = str(description.get("description", ""))
-            self.package = str(description["archive"]["package"])
-            self.archive_paths = [str(p) for p in description["archive"]["paths"]]
-            self.models = [(str(m["name"]), str(m["member"]), str(m["landmarks"]), str(m["sha256"]))
-                           for m in description["models"]]
-            self.base_domain = os.path.join(self.folder, str(description["base_domain"]))
-            self.stages = dict(description.get("stages", {}))
-        except (KeyError, TypeError) as error:
-            raise CollectionError("%s lacks an entry or has one of the wrong kind: %s" % (path, error))
+        entry = _Entries(path)
+        root = entry.of(description, dict, "the file")
+        self.title = entry.of(root.get("title"), str, "title")
+        self.description = entry.of(root.get("description", ""), str, "description")
+        archive = entry.of(root.get("archive"), dict, "archive")
+        self.package = entry.of(archive.get("package"), str, "archive.package")
+        self.archive_paths = [entry.of(p, str, "archive.paths[]") for p in entry.of(archive.get("paths"), list,
+                                                                                       "archive.paths")]
+        self.models = []
+        for index, model in enumerate(entry.of(root.get("models"), list, "models")):
+            where = "models[%d]" % index
+            model = entry.of(model, dict, where)
+            name = entry.of(model.get("name"), str, where + ".name")
+            # Names make file names in the cache and the output folder.
+            if not name or "/" in name or name.startswith("."):
+                raise CollectionError("%s: %s.name %r cannot name a file" % (path, where, name))
+            digest = entry.of(model.get("sha256"), str, where + ".sha256").lower()
+            if not re.fullmatch("[0-9a-f]{64}", digest):
+                raise CollectionError("%s: %s.sha256 is not 64 hexadecimal digits" % (path, where))
+            self.models.append((name, entry.of(model.get("member"), str, where + ".member"),
+                                entry.of(model.get("landmarks"), str, where + ".landmarks"), digest))
         if not self.models:
             raise CollectionError("%s lists no models" % path)
+        names = [name for name, _, _, _ in self.models]
+        if len(set(names)) != len(names):
+            raise CollectionError("%s: two models share a name" % path)
+        self.base_domain = os.path.join(self.folder, entry.of(root.get("base_domain"), str, "base_domain"))
+        self.stages = _checked_stages(entry, entry.of(root.get("stages", {}), dict, "stages"), names)
         self.cache = os.path.join(cache_folder(), os.path.basename(self.folder))
 
     def mesh_paths(self):
@@ -97,7 +114,7 @@ class Collection:
         if override:
             raise CollectionError("%s=%s: no such file" % (ARCHIVE_VARIABLE, override))
         raise CollectionError(
-            "the default collection's meshes come from Debian's %s package, and %s is not there: install it "
+            "the collection's meshes come from Debian's %s package, and %s is not there: install it "
             "(apt-get install %s; ./setup.sh does), set %s to its data.tar.gz, or give your own models with "
             "--mesh and --landmarks" % (self.package, " or ".join(self.archive_paths), self.package,
                                         ARCHIVE_VARIABLE))
@@ -120,6 +137,38 @@ class Collection:
         return paths
 
 
+class _Entries:
+    """Type checks of a collection.json's entries, with errors naming the
+    file and the entry."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def of(self, value, kind, where):
+        # bool is an int to Python, never to a collection.json.
+        if value is None or not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+            raise CollectionError("%s: %s is %s, not %s" % (self.path, where, "missing" if value is None else
+                                                           "a " + type(value).__name__, _KINDS[kind]))
+        return value
+
+
+_KINDS = {dict: "an object", list: "a list", str: "a string", int: "a whole number", bool: "true or false"}
+_STAGES = {"level": int, "pca": int, "blend": bool, "transfer_from": str, "view_up": str}
+
+
+def _checked_stages(entry, stages, names):
+    """The stages of a collection.json, each of the right kind; the command
+    line checks their ranges as for its own options."""
+    for key, value in stages.items():
+        if key not in _STAGES:
+            raise CollectionError("%s: stages.%s is not a stage (%s are)" % (entry.path, key, ", ".join(_STAGES)))
+        entry.of(value, _STAGES[key], "stages." + key)
+    if stages.get("transfer_from") is not None and stages["transfer_from"] not in names:
+        raise CollectionError("%s: stages.transfer_from %s is none of the models" % (entry.path,
+                                                                                     stages["transfer_from"]))
+    return dict(stages)
+
+
 def _sha256(path):
     """The file's SHA-256 in hex, or None if it cannot be read."""
     digest = hashlib.sha256()
@@ -136,10 +185,10 @@ def _extract(archive, wanted, folder):
     """Copies the archive members `wanted` (member -> (path, _)) to their
     paths, each through a temporary file so that an interrupted run leaves
     no half mesh behind; one pass over the compressed archive."""
+    remaining = dict(wanted)
     try:
         os.makedirs(folder, exist_ok=True)
         with tarfile.open(archive, "r:*") as tar:
-            remaining = dict(wanted)
             for member in tar:
                 if member.name not in remaining:
                     continue
@@ -147,13 +196,29 @@ def _extract(archive, wanted, folder):
                 source = tar.extractfile(member)
                 if source is None:
                     raise CollectionError("%s in %s is not a file" % (member.name, archive))
-                handle, temporary = tempfile.mkstemp(dir=folder, suffix=".part")
-                with os.fdopen(handle, "wb") as out:
-                    out.write(source.read())
-                os.replace(temporary, path)
+                _write_atomically(path, source.read())
                 if not remaining:
                     break
-    except (OSError, tarfile.TarError) as error:
+    # A truncated gzip stream ends in EOFError or zlib.error, not TarError.
+    except (OSError, EOFError, zlib.error, tarfile.TarError) as error:
         raise CollectionError("cannot unpack the meshes from %s into %s: %s" % (archive, folder, error))
     if remaining:
         raise CollectionError("%s has no %s" % (archive, ", ".join(sorted(remaining))))
+
+
+def _write_atomically(path, content):
+    """`content` into `path` through a temporary file beside it, readable by
+    all as a cache shared between users must be; no temporary file is left
+    if writing fails."""
+    handle, temporary = tempfile.mkstemp(dir=os.path.dirname(path), suffix=".part")
+    try:
+        with os.fdopen(handle, "wb") as out:
+            out.write(content)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise

@@ -139,16 +139,14 @@ class Panel:
         self.texture = texture
         self.patches = None  # a cell array of patch ids, each drawn in its own colour
         self.curves = None  # polylines drawn over the surface
-        self.edges = False
 
 
-def patch_panel(surface, label, patches="PatchId", curves=None, edges=False):
+def patch_panel(surface, label, patches="PatchId", curves=None):
     """A panel of `surface` with each patch (cell array `patches`) in its
-    own colour, optionally with `curves` drawn over it and its edges shown."""
+    own colour, optionally with `curves` drawn over it."""
     panel = Panel(surface, label)
     panel.patches = patches
     panel.curves = curves
-    panel.edges = edges
     return panel
 
 
@@ -258,10 +256,6 @@ def _actor(panel):
     properties.SetDiffuse(0.85)
     properties.SetSpecular(0.12)
     properties.SetSpecularPower(25)
-    if panel.edges:
-        properties.EdgeVisibilityOn()
-        properties.SetEdgeColor(*CURVE_COLOUR)
-        properties.SetLineWidth(0.5)
     if panel.patches is not None:
         count = int(panel.polydata.GetCellData().GetArray(panel.patches).GetRange()[1]) + 1
         mapper.SetLookupTable(patch_colours(count))
@@ -442,9 +436,9 @@ def normalised(points):
 
 
 def similarity_to(moving, fixed):
-    """The map that scales the points `moving` to the size of `fixed` and
-    turns them as `fixed` stand (counterparts row by row), both first
-    brought to their centres and a unit size: a function of a polydata.
+    """The map that brings the points `moving` to their centre and a unit
+    root-mean-square radius and turns them as `fixed`, brought there too,
+    stand (counterparts row by row): a function of a polydata.
     Shapes of very different sizes (a camel of 1.4 units, a triceratops
     of 20) then share one picture."""
     moving_unit, moving_centre, moving_radius = normalised(moving)
@@ -534,10 +528,10 @@ def picture_single(surface, label, view, texture, scalars, path):
 
 
 def picture_patches(entries, title, view, path, columns=3):
-    """`entries`: (surface, curves or None, label, edges) per model, in a
-    grid of `columns`; every surface coloured by its PatchId."""
+    """`entries`: (surface, curves or None, label) per model, in a grid of
+    `columns`; every surface coloured by its PatchId."""
     rows = -(-len(entries) // columns)
     sheet = Sheet(min(columns, len(entries)), rows, (420, 320), title)
-    for index, (surface, curves, label, edges) in enumerate(entries):
-        sheet.add(index % columns, index // columns, patch_panel(surface, label, curves=curves, edges=edges))
+    for index, (surface, curves, label) in enumerate(entries):
+        sheet.add(index % columns, index // columns, patch_panel(surface, label, curves=curves))
     sheet.write(path, view)

@@ -8,7 +8,9 @@ can be moved or shared as a whole.
 
 import html
 import os
+import shlex
 import time
+from urllib.parse import quote
 
 FILES = ("report.md", "report.html")
 
@@ -55,7 +57,7 @@ def build(report):
     data = report.get("collection")
     if data:
         blocks.append(Paragraph("%s. The meshes were unpacked to %s." % (data["description"], data["meshes"])))
-    blocks.append(Paragraph("Command: `%s`, run on %s." % (" ".join(report.get("command", [])),
+    blocks.append(Paragraph("Command: `%s`, run on %s." % (shlex.join(report.get("command", [])),
                                                             time.strftime("%Y-%m-%d %H:%M"))))
     blocks += _summary(report)
     blocks += _models(report)
@@ -187,9 +189,8 @@ def _transfer(report, drawn):
         return blocks + [Paragraph("Failed: %s." % transfer["error"])]
     text = "%s's texture coordinates and point arrays carried onto every other remesh" % transfer["source"]
     if "texture_coordinates" in transfer:
-        text += " (texture coordinates %s)" % transfer["texture_coordinates"]
-    if "texture_coordinates" in transfer:
-        text += ", drawn as a checkerboard: a square covers the same part of every model"
+        text += " (texture coordinates %s; in the pictures a square of the checkerboard covers the same part of " \
+                "every model)" % transfer["texture_coordinates"]
     blocks.append(Paragraph(text + "."))
     for target in transfer["targets"]:
         file = "%s.from-%s.png" % (target, transfer["source"])
@@ -222,7 +223,8 @@ def markdown(blocks):
             lines.append("|" + "---|" * len(block.header))
             lines += ["| " + " | ".join(str(cell).replace("|", "\\|") for cell in row) + " |" for row in block.rows]
         elif isinstance(block, Picture):
-            lines.append("![%s](%s)" % (block.caption, block.file))
+            # Encoded: a model's name may hold spaces or # (a file name).
+            lines.append("![%s](%s)" % (block.caption, quote(block.file)))
         lines.append("")
     return "\n".join(lines)
 
@@ -242,7 +244,7 @@ def html_page(blocks, title):
             body.append("<table><tr>%s</tr>%s</table>" % (head, rows))
         elif isinstance(block, Picture):
             body.append('<figure><img src="%s" alt="%s"><figcaption>%s</figcaption></figure>'
-                        % (html.escape(block.file), html.escape(block.caption), html.escape(block.caption)))
+                        % (html.escape(quote(block.file)), html.escape(block.caption), html.escape(block.caption)))
     style = ("body{font-family:sans-serif;max-width:1250px;margin:2em auto;color:#222}"
              "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
              "td:first-child,th{text-align:left}img{max-width:100%}figcaption{color:#555}")

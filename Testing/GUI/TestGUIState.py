@@ -7,7 +7,7 @@ GUI's Python test scripts are event recordings, not code) followed by
 --test-baseline. --state cannot go with --script, so gui_checks.py, run by
 --script, loads the state.
 
-  /usr/bin/python3 TestGUIState.py --paraview PARAVIEW --xvfb-run XVFB_RUN
+  pvpython TestGUIState.py --paraview PARAVIEW --xvfb-run XVFB_RUN
       --plugin-dir DIR --state STATE --baseline PNG --output DIR
 
 With --rebaseline the test image is copied over the baseline (after a
@@ -41,7 +41,9 @@ def main():
     shutil.rmtree(args.output, ignore_errors=True)
     os.makedirs(args.output)
     checks_file = os.path.join(args.output, "checks.json")
-    environment = dict(os.environ, CMP_GUI_CHECKS=checks_file, CMP_GUI_OUTPUT=args.output,
+    # The plugin must come from --plugins, not from a developer's own path.
+    environment = {k: v for k, v in os.environ.items() if k != "PV_PLUGIN_PATH"}
+    environment.update(CMP_GUI_CHECKS=checks_file, CMP_GUI_OUTPUT=args.output,
                        CMP_GUI_STATE=os.path.abspath(args.state))
     command = [args.xvfb_run, "-a", "-s", "-screen 0 1400x900x24", args.paraview, "--dr",
                "--plugin-search-paths=" + args.plugin_dir, "--plugins=ConsistentMeshParameterizations",
@@ -49,7 +51,7 @@ def main():
                "--test-baseline=" + args.baseline, "--test-threshold=%d" % THRESHOLD,
                "--test-directory=" + args.output, "--exit"]
     result = subprocess.run(command, env=environment, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            universal_newlines=True, timeout=300)
+                            universal_newlines=True, timeout=240)  # below ctest's 300 s: a report, not a kill
     log = result.stdout
     with open(os.path.join(args.output, "paraview.log"), "w") as out:
         out.write(log)

@@ -11,12 +11,12 @@ import traceback
 
 import paraview.simple as simple
 
-checks = {}
+# Before the state runs: it would load the plugin itself if the GUI had not.
+checks = {"plugin_loaded": hasattr(simple, "FeatureNetTracer")}
 try:
     state = os.environ["CMP_GUI_STATE"]
     with open(state) as source:
         exec(compile(source.read(), state, "exec"), {"__file__": state, "__name__": "__main__"})
-    checks["plugin_loaded"] = hasattr(simple, "FeatureNetTracer")
     checks["sources"] = sorted(simple.GetSources()[key].GetXMLLabel() + ":" + key[0]
                                for key in simple.GetSources())
     remesher = simple.FindSource("Semi-Regular Remesher")

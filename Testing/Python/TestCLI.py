@@ -930,6 +930,22 @@ def check_remesh_failure(tmp, pairs):
     check(not os.path.exists(os.path.join(out, "mean.vtp")), "mean.vtp written without remeshes")
 
 
+def collection_with(tmp, part, key, value):
+    """--collection FOLDER for a one-model collection.json whose `part`
+    ("stages", "archive" or "model") has `key` set to `value`."""
+    description = {
+        "title": "test", "archive": {"package": "libcgal-demo", "paths": ["/nowhere.tar.gz"]},
+        "models": [{"name": "a", "member": "a.off", "landmarks": "a.vts", "sha256": "0" * 64}],
+        "base_domain": "l0.vtp", "stages": {},
+    }
+    (description["models"][0] if part == "model" else description[part])[key] = value
+    folder = os.path.join(tmp, "collection-%s-%s" % (part, key))
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "collection.json"), "w") as out:
+        json.dump(description, out)
+    return ["--collection", folder]
+
+
 def case_argument_errors(tmp):
     """Usage errors: a non-zero exit status, a one-line reason, no output."""
     a, b, c = os.path.join(tmp, "a.off"), os.path.join(tmp, "b.off"), os.path.join(tmp, "c.off")
@@ -945,6 +961,12 @@ def case_argument_errors(tmp):
         (["--landmarks", la], "at least one --mesh"),
         (["--collection", os.path.join(tmp, "nowhere")], "cannot read the collection description"),
         (["--collection", tmp, "--mesh", a, "--landmarks", la], "give a collection or models, not both"),
+        (collection_with(tmp, "stages", "blend", "false"), "stages.blend is a str, not true or false"),
+        (collection_with(tmp, "stages", "level", "4"), "stages.level is a str, not a whole number"),
+        (collection_with(tmp, "stages", "transfer_from", "cow"), "stages.transfer_from cow is none of the models"),
+        (collection_with(tmp, "archive", "paths", "/x.tar.gz"), "archive.paths is a str, not a list"),
+        (collection_with(tmp, "model", "sha256", "xyz"), "models[0].sha256 is not 64 hexadecimal digits"),
+        (collection_with(tmp, "model", "name", "../up"), "models[0].name '../up' cannot name a file"),
         (["--mesh", a, "--landmarks", la, "--mesh", os.path.join(tmp, "other", "a.obj"), "--landmarks", lb],
          "two meshes share the name a"),
         (["--mesh", a, "--landmarks", la, "--level", "9"], "--level 9: give a level from 0 to 8"),
@@ -1090,7 +1112,9 @@ def case_default_collection(tmp):
     for name, vertices in QUADRUPEDS:
         check_equal(report["models"][name]["vertices"], vertices, name + " vertices")
         check_contains(stdout, "[%d/5] %s: straightened in" % (names.index(name) + 1, name), "progress")
-    check_equal(report["base_domain"]["vertices"], 21, "the shipped base domain")
+    check(report["base_domain"]["source"].endswith(os.path.join("cgal-quadrupeds", "base_domain.vtp")),
+          "not the shipped base domain: %s" % report["base_domain"]["source"])
+    check_equal(report["base_domain"]["vertices"], 21, "the shipped base domain's vertices")
     check_remeshed(out, report, stdout, names, 4)
     check_pca(out, report, stdout, names, 3)
     check_blend_grid(out, report, stdout, names[:3])
@@ -1130,6 +1154,24 @@ def case_default_collection(tmp):
         write_off(octahedron, OCTAHEDRON_POINTS, OCTAHEDRON_TRIANGLES)
         for name in names:
             archive.add(octahedron, "data/meshes/%s.off" % name)
+    truncated = os.path.join(tmp, "truncated.tar.gz")
+    collection = cli_module().collection
+    package_archive = collection.Collection(collection.default_folder()).find_archive()
+    with open(package_archive, "rb") as source, open(truncated, "wb") as out:
+        out.write(source.read(1 << 20))
+    status, stdout, stderr, _ = run_cli(again, environment=dict(fresh, CMP_CGAL_DATA_ARCHIVE=truncated))
+    check_equal(status, 4, "truncated archive: exit status (stderr: %s)" % stderr)
+    check_contains(stderr, "cannot unpack the meshes from " + truncated, "truncated archive")
+    check_equal([f for f in os.listdir(os.path.join(fresh["CMP_CACHE_DIR"], "cgal-quadrupeds"))
+                 if f.endswith(".part")], [], "half-written meshes left in the cache")
+    # Root may write anywhere but in sysfs: an output folder nothing can be
+    # written in is refused before any work.
+    if os.path.isdir("/sys/kernel"):
+        status, stdout, stderr, _ = run_cli(["--no-render", "--level", "1", "--output", "/sys/kernel"],
+                                            environment={"CMP_CACHE_DIR": cache})
+        check_equal(status, 2, "unwritable output folder: exit status")
+        check_contains(stderr, "cannot write in the output folder /sys/kernel", "unwritable output folder")
+        check("straightened" not in stdout, "work was done for an unwritable output folder")
     status, stdout, stderr, _ = run_cli(again, environment=dict(fresh, CMP_CGAL_DATA_ARCHIVE=changed))
     check_equal(status, 4, "changed archive: exit status")
     check_contains(stderr, "data/meshes/triceratops.off in libcgal-demo is not the mesh this collection's landmarks "
@@ -1139,10 +1181,12 @@ def case_default_collection(tmp):
 def check_report_pages(out, names, pictures):
     """report.md and report.html: a row per model, every picture shown, and
     nothing shown that is not there."""
+    from urllib.parse import unquote
+
     for page, image in (("report.md", r"!\[[^]]*\]\(([^)]+)\)"), ("report.html", r'<img src="([^"]+)"')):
         with open(os.path.join(out, page)) as f:
             text = f.read()
-        shown = re.findall(image, text)
+        shown = [unquote(name) for name in re.findall(image, text)]
         check_equal(shown, pictures, page + ": pictures")
         for name in names:
             row = "| %s |" % name if page == "report.md" else "<td>%s</td>" % name
