@@ -1107,6 +1107,10 @@ def case_default_collection(tmp):
         report = json.load(f)
     names = [name for name, _ in QUADRUPEDS]
     check_contains(stdout, "unpacking 5 meshes", "first run")
+    for name, _ in QUADRUPEDS:
+        mode = os.stat(os.path.join(cache, "cgal-quadrupeds", name + ".off")).st_mode
+        check(mode & 0o044 == 0o044, "%s.off in the cache is not readable by others (mode %o): a shared cache "
+              "would fail for them" % (name, mode & 0o777))
     check_equal(report["failed"], [], "failed models")
     check_equal(list(report["models"]), names, "models in the collection's order")
     for name, vertices in QUADRUPEDS:
