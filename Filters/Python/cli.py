@@ -25,8 +25,8 @@ Usage:
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
                     [--adaptive-tolerance T] [--transfer-from NAME] [--details-from NAME] [--pca K]
-                    [--blend] [--blend-weights W0,W1,...] [--no-render] [--view-up AXIS]
-                    --output DIR
+                    [--blend] [--blend-weights W0,W1,...] [--blend-alignment MODE]
+                    [--no-render] [--view-up AXIS] --output DIR
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others; the exit status is 1 if any
@@ -67,7 +67,11 @@ RENDERED_MODES = 3
 BLEND_GRID_STEPS = 4
 WEIGHT_SUM_TOLERANCE = 1e-9  # vtkCMPShapeBlend's
 PCA_ALIGNMENT = "rigid, equal volume"  # vtkCMPMeshPCA's default, the paper's choice
-BLEND_ALIGNMENT = "rigid"  # vtkCMPShapeBlend's default: shapes keep their sizes
+# --blend-alignment: vtkCMPShapeBlend's Alignment values and their names in
+# the report. Rigid, the default, blends sizes too; equal volume suits
+# collections of very different sizes (a 15-unit triceratops, a 1-unit camel).
+BLEND_ALIGNMENTS = {"none": (0, "none"), "rigid": (1, "rigid"), "equal-volume": (2, "rigid, equal volume"),
+                    "unit-size": (3, "rigid, unit centroid size")}
 
 
 class StageError(Exception):
@@ -499,10 +503,12 @@ def _sub_collection(remeshes, indices):
     return blocks
 
 
-def _blend(blocks, weights):
-    """ShapeBlend of `blocks` with `weights`: (surface, extrapolating)."""
+def _blend(blocks, weights, alignment):
+    """ShapeBlend of `blocks` with `weights` after `alignment` (a key of
+    BLEND_ALIGNMENTS): (surface, extrapolating)."""
     blend = cmp.vtkCMPShapeBlend()
     blend.SetInputData(blocks)
+    blend.SetAlignment(BLEND_ALIGNMENTS[alignment][0])
     blend.SetWeights([float(w) for w in weights])
     surface = vtkPolyData()
     surface.ShallowCopy(_run(blend))
@@ -528,7 +534,7 @@ def blend_grid_layout(count):
     return layout, (n + 1, n + 1)
 
 
-def blend_grid(ready, remeshes, output_folder):
+def blend_grid(ready, remeshes, output_folder, alignment):
     """Blends of the first three remeshed models (two if there are only
     two) on a grid of weights: writes blend-grid.vtm, one block per blend
     named by its weights; returns the figures and the blends for the
@@ -541,7 +547,7 @@ def blend_grid(ready, remeshes, output_folder):
     results = vtkMultiBlockDataSet()
     entries = []
     for index, (weights, column, row) in enumerate(layout):
-        surface, _ = _blend(blocks, weights)
+        surface, _ = _blend(blocks, weights, alignment)
         label = " + ".join("%g %s" % (w, name) for w, name in zip(weights, names) if w)
         results.SetBlock(index, surface)
         results.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), label)
@@ -551,7 +557,7 @@ def blend_grid(ready, remeshes, output_folder):
     write_multiblock(results, os.path.join(output_folder, "blend-grid.vtm"))
     figures = {
         "models": names,
-        "alignment": BLEND_ALIGNMENT,
+        "alignment": BLEND_ALIGNMENTS[alignment][1],
         "blends": len(layout),
         "weights": [list(weights) for weights, _, _ in layout],
         "file": "blend-grid.vtm",
@@ -560,7 +566,7 @@ def blend_grid(ready, remeshes, output_folder):
     return figures, (entries, grid)
 
 
-def run_blend_grid(ready, remeshes, output_folder):
+def run_blend_grid(ready, remeshes, output_folder, alignment):
     """The --blend stage, reported but never fatal to the models: (figures,
     what the picture needs or None)."""
     remeshed = 0 if remeshes is None else len(ready)
@@ -569,12 +575,12 @@ def run_blend_grid(ready, remeshes, output_folder):
                 "error": "a blend needs at least two remeshed models, not %d" % remeshed}, None
     print("blending %s" % ", ".join(m.name for m in ready[:3]), flush=True)
     try:
-        return blend_grid(ready, remeshes, output_folder)
+        return blend_grid(ready, remeshes, output_folder, alignment)
     except StageError as error:
         return {"models": [m.name for m in ready[:3]], "error": str(error)}, None
 
 
-def run_blend(weights, models, ready, remeshes, output_folder):
+def run_blend(weights, models, ready, remeshes, output_folder, alignment):
     """The --blend-weights stage: one blend of every model with the given
     weights, written to blend.vtp; (figures, blend or None)."""
     named = {m.name: w for m, w in zip(models, weights)}
@@ -586,11 +592,11 @@ def run_blend(weights, models, ready, remeshes, output_folder):
     print("blending every model with weights %s" % _weights_text(weights), flush=True)
     start = time.perf_counter()
     try:
-        surface, extrapolating = _blend(remeshes, weights)
+        surface, extrapolating = _blend(remeshes, weights, alignment)
         write_polydata(surface, os.path.join(output_folder, "blend.vtp"))
     except StageError as error:
         return {"weights": named, "error": str(error)}, None
-    return {"weights": named, "alignment": BLEND_ALIGNMENT, "extrapolating": extrapolating, "file": "blend.vtp",
+    return {"weights": named, "alignment": BLEND_ALIGNMENTS[alignment][1], "extrapolating": extrapolating, "file": "blend.vtp",
             "seconds": round(time.perf_counter() - start, 4)}, surface
 
 
@@ -847,6 +853,10 @@ def parse_arguments(argv):
     parser.add_argument("--blend-weights", nargs="+", metavar="W",
                         help="blend every model with these weights, one per --mesh in order, summing to 1, "
                         "separated by commas or spaces; a weight outside [0, 1] extrapolates (blend.vtp, blend.png)")
+    parser.add_argument("--blend-alignment", choices=sorted(BLEND_ALIGNMENTS), metavar="MODE",
+                        help="how the models are aligned before --blend and --blend-weights: rigid (default: "
+                        "rotations and translations, sizes blend too), equal-volume (also scaled to one volume), "
+                        "unit-size (scaled to unit centroid size) or none")
     parser.add_argument("--no-render", action="store_true",
                         help="make no PNG pictures (they need an X display; xvfb-run -a gives one)")
     parser.add_argument("--view-up", metavar="AXIS",
@@ -867,6 +877,11 @@ def parse_arguments(argv):
         args.level = DEFAULT_LEVEL
     if args.view_up is None:
         args.view_up = "+y"
+    if args.blend_alignment is None:
+        args.blend_alignment = "rigid"
+    if args.blend_alignment not in BLEND_ALIGNMENTS:  # from a collection.json
+        parser.error("blend_alignment %s: give one of %s"
+                     % (args.blend_alignment, ", ".join(sorted(BLEND_ALIGNMENTS))))
     if len(args.mesh) != len(args.landmarks):
         parser.error("%d --mesh but %d --landmarks: give one landmark file per mesh" % (len(args.mesh), len(args.landmarks)))
     names = [os.path.splitext(os.path.basename(m))[0] for m in args.mesh]
@@ -944,7 +959,7 @@ def use_collection(parser, args):
     if args.base_domain is None and args.base_domain_from is None:
         args.base_domain = data.base_domain
     stages = data.stages
-    for option in ("level", "pca", "transfer_from", "view_up"):
+    for option in ("level", "pca", "transfer_from", "view_up", "blend_alignment"):
         if getattr(args, option) is None and stages.get(option) is not None:
             setattr(args, option, stages[option])
     args.blend = args.blend or bool(stages.get("blend"))
@@ -1088,11 +1103,12 @@ def main(argv=None):
         if mean is not None:
             stages["pca"] = (mean, report["pca"])
     if args.blend:
-        report["blend_grid"], grid = run_blend_grid(ready, remeshes, args.output)
+        report["blend_grid"], grid = run_blend_grid(ready, remeshes, args.output, args.blend_alignment)
         if grid is not None:
             stages["blend_grid"] = (grid, report["blend_grid"]["models"])
     if args.blend_weights is not None:
-        report["blend"], blend = run_blend(args.blend_weights, models, ready, remeshes, args.output)
+        report["blend"], blend = run_blend(args.blend_weights, models, ready, remeshes, args.output,
+                                           args.blend_alignment)
         if blend is not None:
             stages["blend"] = (blend, args.blend_weights)
     if ready:

@@ -563,13 +563,14 @@ def edge_lengths(polydata):
     return numpy.linalg.norm(points[triangles] - points[numpy.roll(triangles, 1, axis=1)], axis=2)
 
 
-def check_blend_grid(out, report, stdout, names):
+def check_blend_grid(out, report, stdout, names, scaled=False):
     """--blend: the report, and blend-grid.vtm holding the blends of the
     first models named by their weights. The blends of one collection are
     affine in the weights (one alignment for all), so every blend is the
     weighted sum of the corners; corner 0 is model 0 itself (the frame is
-    model 0's), the other corners are their models moved rigidly.
-    Returns the corners' points."""
+    model 0's), the other corners are their models moved rigidly, or with
+    `scaled` (--blend-alignment equal-volume) every corner is its model
+    moved and scaled. Returns the corners' points."""
     import numpy
 
     grid = report.get("blend_grid")
@@ -597,14 +598,29 @@ def check_blend_grid(out, report, stdout, names):
         combined = sum(x * c for x, c in zip(w, corners))
         check(max_difference(p, combined) <= 1e-9 * scale, "blend %r is not the weighted sum of the corners" % w)
     first = read_vtp(os.path.join(out, names[0] + ".remesh.vtp"))
-    check(max_difference(corners[0], points_of(first)) <= 1e-9 * scale, "corner 0 is not %s's remesh" % names[0])
-    for k in range(1, count):
+    if not scaled:
+        check(max_difference(corners[0], points_of(first)) <= 1e-9 * scale, "corner 0 is not %s's remesh" % names[0])
+    for k in range(0 if scaled else 1, count):
         remesh = read_vtp(os.path.join(out, names[k] + ".remesh.vtp"))
         moved = blocks[weights.index([1.0 if i == k else 0.0 for i in range(count)])][1]
-        difference = numpy.abs(edge_lengths(moved) - edge_lengths(remesh)).max()
-        check(difference <= 1e-9 * scale, "corner %d is not a rigid motion of %s: edges differ by %g"
-              % (k, names[k], difference))
+        ratios = edge_lengths(moved) / edge_lengths(remesh)
+        factor = numpy.median(ratios) if scaled else 1.0
+        spread = numpy.abs(ratios - factor).max()
+        check(spread <= 1e-9, "corner %d is not a %s of %s: edge length ratios vary by %g"
+              % (k, "similarity" if scaled else "rigid motion", names[k], spread))
+    if scaled:
+        volumes = [abs(signed_volume(corner, cells_of(first)[1].reshape(-1, 3))) for corner in corners]
+        check(max(volumes) - min(volumes) <= 1e-9 * max(volumes), "corners of unequal volume: %r" % volumes)
     return corners
+
+
+def signed_volume(points, triangles):
+    """The volume a closed triangle surface encloses (signed by its
+    orientation)."""
+    import numpy
+
+    a, b, c = (points[triangles[:, k]] for k in range(3))
+    return float(numpy.einsum("ij,ij->i", a, numpy.cross(b, c)).sum() / 6.0)
 
 
 def check_blend(out, report, stdout, weights, extrapolating):
@@ -1121,7 +1137,8 @@ def case_default_collection(tmp):
     check_equal(report["base_domain"]["vertices"], 21, "the shipped base domain's vertices")
     check_remeshed(out, report, stdout, names, 4)
     check_pca(out, report, stdout, names, 3)
-    check_blend_grid(out, report, stdout, names[:3])
+    check_blend_grid(out, report, stdout, names[:3], scaled=True)
+    check_equal(report["blend_grid"]["alignment"], "rigid, equal volume", "the collection's blend alignment")
     transfer = report.get("transfer", {})
     check_equal(sorted(transfer.get("targets", {})), sorted(names[1:]), "texture transfer targets")
     check("cylindrical" in transfer.get("texture_coordinates", ""), "transfer: %r" % transfer)
