@@ -45,7 +45,9 @@ import os
 import sys
 import time
 
+import numpy
 from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand, vtkIntArray, vtkLogger
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
@@ -156,8 +158,7 @@ def read_landmarked_surface(model):
 
 
 def _landmark_count(surface):
-    ids = surface.GetPointData().GetArray("FeatureId")
-    return sum(1 for i in range(ids.GetNumberOfTuples()) if ids.GetValue(i) >= 0)
+    return len(_landmark_points(surface))
 
 
 def load_base_domain(path):
@@ -688,13 +689,11 @@ def make_overview_pictures(pictures, ready, remeshes):
 
 
 def _landmark_points(surface):
-    """The point ids of landmarks 0, 1, ... of `surface`."""
-    ids = surface.GetPointData().GetArray("FeatureId")
-    found = {}
-    for point in range(ids.GetNumberOfTuples()):
-        if ids.GetValue(point) >= 0:
-            found[ids.GetValue(point)] = point
-    return [found[k] for k in sorted(found)]
+    """The point ids of landmarks 0, 1, ... of `surface` (Check Inputs has
+    made sure each feature is on one vertex)."""
+    features = vtk_to_numpy(surface.GetPointData().GetArray("FeatureId"))
+    points = numpy.flatnonzero(features >= 0)
+    return points[numpy.argsort(features[points])]
 
 
 def _block_by_name(blocks):

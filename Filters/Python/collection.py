@@ -130,7 +130,8 @@ class Collection:
             progress("unpacking %d mesh%s from %s into %s"
                      % (len(wanted), "" if len(wanted) == 1 else "es", archive, self.cache))
             _extract(archive, wanted, self.cache)
-        for (name, member, _, digest), path in zip(self.models, paths):
+        # Only what was just unpacked needs checking again.
+        for member, (path, digest) in wanted.items():
             if _sha256(path) != digest:
                 raise CollectionError("%s in %s is not the mesh this collection's landmarks were picked on (its "
                                       "SHA-256 differs): the package has changed" % (member, self.package))
