@@ -104,6 +104,18 @@ double rms(const Eigen::MatrixXd& values)
   return std::sqrt(values.squaredNorm() / values.rows());
 }
 
+/// The finest-level values `coefficients` give with every detail above
+/// level `l` dropped: the smooth surface level l describes.
+Eigen::MatrixXd withoutDetailsAbove(
+  const LoopWaveletTransform& transform, const WaveletCoefficients& coefficients, int l)
+{
+  WaveletCoefficients truncated = coefficients;
+  truncated.values.bottomRows(transform.vertexCount(transform.level()) - transform.vertexCount(l)).setZero();
+  Eigen::MatrixXd values;
+  EXPECT_TRUE(transform.synthesize(truncated, values).ok());
+  return values;
+}
+
 struct NamedDomain
 {
   std::string name;
@@ -250,10 +262,7 @@ TEST(LoopWavelet, CoarseLevelsSmoothNoise)
   double finer = rms(noise);
   for (int l = finest - 1; l >= 0; --l)
   {
-    WaveletCoefficients truncated = coefficients;
-    truncated.values.bottomRows(mesh.vertexCount() - transform.vertexCount(l)).setZero();
-    Eigen::MatrixXd surface;
-    ASSERT_TRUE(transform.synthesize(truncated, surface).ok());
+    const Eigen::MatrixXd surface = withoutDetailsAbove(transform, coefficients, l);
     EXPECT_LT(rms(surface), 0.8 * finer) << "level " << l;
     finer = rms(surface);
   }
@@ -275,11 +284,7 @@ TEST(LoopWavelet, DetailsOfASmoothSurfaceDecayWithLevel)
     for (int l = 2; l <= finest; ++l)
       EXPECT_LT(rms(coefficients.details(l)), 0.5 * rms(coefficients.details(l - 1))) << "level " << l;
     // Without details, the coarsest values synthesize a smooth Loop surface close to the sphere.
-    WaveletCoefficients smooth = coefficients;
-    smooth.values.bottomRows(mesh.vertexCount() - transform.vertexCount(0)).setZero();
-    Eigen::MatrixXd surface;
-    ASSERT_TRUE(transform.synthesize(smooth, surface).ok());
-    const Eigen::VectorXd radius = surface.rowwise().norm();
+    const Eigen::VectorXd radius = withoutDetailsAbove(transform, coefficients, 0).rowwise().norm();
     EXPECT_GT(radius.minCoeff(), 0.95);
     EXPECT_LT(radius.maxCoeff(), 1.05);
   }
