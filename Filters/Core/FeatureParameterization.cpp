@@ -7,13 +7,12 @@ namespace cmp
 
 void FeatureCoordinates::appendInterpolated(int a, int b, double t)
 {
-  const std::size_t rowA = static_cast<std::size_t>(a) * featureCount;
-  const std::size_t rowB = static_cast<std::size_t>(b) * featureCount;
-  for (int f = 0; f < featureCount; ++f)
-    values.push_back((1.0 - t) * values[rowA + f] + t * values[rowB + f]);
+  for (std::vector<double>& component : components)
+    component.push_back((1.0 - t) * component[a] + t * component[b]);
 }
 
-Status computeFeatureCoordinates(const TriangleMesh& mesh, const LandmarkList& landmarks, FeatureCoordinates& out)
+Status computeFeatureCoordinates(const TriangleMesh& mesh, const LandmarkList& landmarks, FeatureCoordinates& out,
+  const FeatureCoordinateOptions& options)
 {
   const int n = mesh.vertexCount();
   const int featureCount = static_cast<int>(landmarks.size());
@@ -21,13 +20,16 @@ Status computeFeatureCoordinates(const TriangleMesh& mesh, const LandmarkList& l
   for (int f = 0; f < featureCount; ++f)
     fixedRow[landmarks[f]] = f;
   Eigen::MatrixXd values;
-  if (Status s = solveMeanValueSystem(mesh, fixedRow, Eigen::MatrixXd::Identity(featureCount, featureCount), values);
-      !s.ok())
+  const Eigen::MatrixXd unitVectors = Eigen::MatrixXd::Identity(featureCount, featureCount);
+  const Status s = n > options.directSolveLimit
+    ? solveConvexCombinationMultilevel(meanValueWeights(mesh), fixedRow, unitVectors, values, options.multilevel)
+    : solveMeanValueSystem(mesh, fixedRow, unitVectors, values);
+  if (!s.ok())
     return Status::error("harmonic parameterization: " + s.message());
   out.featureCount = featureCount;
-  out.values.resize(static_cast<std::size_t>(n) * featureCount);
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(out.values.data(), n,
-    featureCount) = values;
+  out.components.assign(featureCount, {});
+  for (int f = 0; f < featureCount; ++f)
+    out.components[f].assign(values.col(f).data(), values.col(f).data() + n);
   return {};
 }
 

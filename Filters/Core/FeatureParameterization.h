@@ -4,6 +4,7 @@
 ///        its base domain (Section 2.2, "Parameterization").
 
 #include "Landmarks.h"
+#include "MultilevelSolver.h"
 #include "Status.h"
 #include "TriangleMesh.h"
 
@@ -12,17 +13,33 @@
 namespace cmp
 {
 
-/// \brief Per-vertex F-vectors: `values[v * F + f]` is component f of
+/// \brief Per-vertex F-vectors: `components[f][v]` is component f of
 ///        vertex v's parameter value pi_v.
+///
+/// One array per feature because a brush fire reads two components of many
+/// neighbouring vertices: two arrays of a million doubles stay in cache where
+/// rows of F values would not.
 struct FeatureCoordinates
 {
-  int featureCount = 0;       ///< F.
-  std::vector<double> values; ///< Row-major, one row of F values per vertex.
+  int featureCount = 0;                         ///< F.
+  std::vector<std::vector<double>> components;  ///< F arrays of one value per vertex.
 
   /// \brief Component f of vertex v.
-  double at(int v, int f) const { return values[static_cast<std::size_t>(v) * featureCount + f]; }
+  double at(int v, int f) const { return components[f][v]; }
   /// \brief Appends a vertex whose F-vector is `(1-t) pi_a + t pi_b`.
   void appendInterpolated(int a, int b, double t);
+};
+
+/// \brief How `computeFeatureCoordinates()` solves its system.
+struct FeatureCoordinateOptions
+{
+  /// \brief Surfaces with more vertices than this are solved coarse to fine
+  ///        (`solveConvexCombinationMultilevel()`) instead of by one sparse
+  ///        LU of the whole system: 1.9 s instead of 19 s on a million
+  ///        triangles, 2x faster already at 58K vertices, with nets as long.
+  int directSolveLimit = 50000;
+  /// \brief Tuning of the coarse-to-fine solve.
+  MultilevelOptions multilevel;
 };
 
 /// \brief Solves pi_v = sum_j w_vj pi_j with Floater's mean value weights
@@ -30,7 +47,9 @@ struct FeatureCoordinates
 ///
 /// The weights are a convex combination, so every component lies in [0, 1]
 /// and each row sums to 1. One sparse LU factorization serves all F
-/// right-hand sides.
-Status computeFeatureCoordinates(const TriangleMesh& mesh, const LandmarkList& landmarks, FeatureCoordinates& out);
+/// right-hand sides. Surfaces above `options.directSolveLimit` vertices get
+/// the coarse-to-fine approximation instead, which keeps those properties.
+Status computeFeatureCoordinates(const TriangleMesh& mesh, const LandmarkList& landmarks, FeatureCoordinates& out,
+  const FeatureCoordinateOptions& options = {});
 
 } // namespace cmp

@@ -42,28 +42,43 @@ public:
   /// `target`, which it may enter only from a vertex marked as a gate; or,
   /// with `target < 0`, at the first gate vertex it reaches. Fills `path`
   /// (source first) and returns its cost, or infinity if nothing was reached.
-  template <class Cost>
+  /// `remaining(x)` is a lower bound of the cost from x to the target that
+  /// never drops by more than an edge's cost along the edge (A*; it must be
+  /// 0 when `target < 0`): the path found is a cheapest one all the same, but
+  /// the fire stays near the line to the target instead of flooding a disc.
+  template <class Cost, class Remaining>
   double run(const EditableMesh& mesh, const std::vector<char>& blocked, int source, const std::vector<int>& starts,
-    int target, const std::vector<int>& gates, Cost cost, std::vector<int>& path)
+    int target, const std::vector<int>& gates, Cost cost, Remaining remaining, std::vector<int>& path)
   {
     resize(mesh.vertexCount());
     ++stamp_;
     for (int g : gates)
       gate_[g] = stamp_;
     Heap heap;
+    const auto relax = [&](int x, int from, double d)
+    {
+      if (closed_[x] == stamp_ || (seen_[x] == stamp_ && dist_[x] <= d))
+        return;
+      seen_[x] = stamp_;
+      dist_[x] = d;
+      parent_[x] = from;
+      heap.push({ d + remaining(x), x });
+    };
     for (int h : starts)
     {
       const int x = mesh.to(h);
       if (!blocked[x] || (target < 0 && gate_[x] == stamp_))
-        relax(x, source, cost(source, x), heap);
+        relax(x, source, cost(source, x));
     }
     int reached = -1;
     while (!heap.empty())
     {
-      const auto [d, x] = heap.top();
+      const int x = heap.top().second;
       heap.pop();
-      if (seen_[x] != stamp_ || d > dist_[x])
-        continue;
+      if (closed_[x] == stamp_)
+        continue; // a stale entry: x was settled through a cheaper one
+      closed_[x] = stamp_;
+      const double d = dist_[x];
       if (x == target || (target < 0 && gate_[x] == stamp_))
       {
         reached = x;
@@ -78,7 +93,7 @@ public:
         const int y = mesh.to(h);
         const bool enterTarget = y == target && gate_[x] == stamp_;
         if (enterTarget || !blocked[y] || (target < 0 && gate_[y] == stamp_))
-          relax(y, x, d + cost(x, y), heap);
+          relax(y, x, d + cost(x, y));
         h = mesh.nextAroundVertex(h);
       } while (h != first);
     }
@@ -104,21 +119,13 @@ private:
       parent_.resize(n);
       seen_.resize(n, 0);
       gate_.resize(n, 0);
+      closed_.resize(n, 0);
     }
-  }
-  void relax(int x, int from, double d, Heap& heap)
-  {
-    if (seen_[x] == stamp_ && dist_[x] <= d)
-      return;
-    seen_[x] = stamp_;
-    dist_[x] = d;
-    parent_[x] = from;
-    heap.push({ d, x });
   }
 
   std::vector<double> dist_;
   std::vector<int> parent_;
-  std::vector<unsigned> seen_, gate_;
+  std::vector<unsigned> seen_, gate_, closed_;
   unsigned stamp_ = 0;
 };
 
@@ -138,7 +145,7 @@ public:
   {
     if (Status s = net_.mesh.build(surface); !s.ok())
       return s;
-    if (Status s = computeFeatureCoordinates(surface, landmarks, coordinates_); !s.ok())
+    if (Status s = computeFeatureCoordinates(surface, landmarks, coordinates_, options_.featureCoordinates); !s.ok())
       return s;
     const int baseVertices = domain_.mesh.vertexCount();
     net_.landmarkVertex.resize(baseVertices);
@@ -312,9 +319,13 @@ private:
                          coordinates_.at(y, fb));
       return (net_.mesh.point(x) - net_.mesh.point(y)).norm() * (1.0 + weight * (1.0 - k));
     };
+    // Every edge costs at least its length (pi[f] + pi[f'] <= 1), so the
+    // straight distance to the target bounds what is left.
+    const Vec3 target = net_.mesh.point(net_.landmarkVertex[b]);
+    const auto remaining = [&](int x) { return weight >= 0.0 ? (net_.mesh.point(x) - target).norm() : 0.0; };
     ++report_.traces;
     const double found = fire_.run(net_.mesh, occupied_, net_.landmarkVertex[a], starts, net_.landmarkVertex[b],
-      gates, cost, tentative_[e]);
+      gates, cost, remaining, tentative_[e]);
     if (found == kInfinity)
       return Status::error("internal error: no curve found between features " + std::to_string(featureOf_[a]) +
         " and " + std::to_string(featureOf_[b]));
@@ -372,7 +383,7 @@ private:
     std::vector<int> reach;
     ++report_.traces;
     if (fire_.run(net_.mesh, occupied_, net_.landmarkVertex[bv], sector(bv, before, after), -1, interior, length,
-          reach) == kInfinity)
+          [](int) { return 0.0; }, reach) == kInfinity)
       return Side::Unknown;
     const int hit = reach.back();
     const int from = reach[reach.size() - 2];

@@ -4,6 +4,7 @@
 ///        the base domain (the paper's Sections 2.1 and 2.2).
 
 #include "BaseDomain.h"
+#include "FeatureParameterization.h"
 #include "Landmarks.h"
 #include "PatchLayout.h"
 #include "Status.h"
@@ -24,6 +25,8 @@ struct NetTracerOptions
   ///        path: each edge costs length * (1 + weight * (1 - K)). 0 gives
   ///        restricted shortest paths.
   double parameterizationWeight = 2.0;
+  /// \brief How the harmonic parameterization behind that ridge is solved.
+  FeatureCoordinateOptions featureCoordinates;
   /// \brief Run the paper's swirl detector before accepting a curve.
   bool detectSwirls = true;
   /// \brief How often one curve may be postponed by the swirl detector
