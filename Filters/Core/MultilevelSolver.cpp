@@ -1,6 +1,6 @@
 #include "MultilevelSolver.h"
 
-#include "MeanValueSystem.h"
+#include <Eigen/SparseLU>
 
 #include <algorithm>
 
@@ -107,41 +107,56 @@ Level coarsen(Level& fine)
   return makeLevel(std::move(weights), std::move(fixedRow));
 }
 
-/// x_i = sum_j w_ij x_j / sum_j w_ij for one free row, all columns at once.
-void relaxRow(const Level& level, int i, RowMatrix& x, std::vector<double>& sum)
+/// Solves row i of totals_i x_i - sum_j w_ij x_j = b_i for x_i, all columns
+/// at once (`rhs` null: b = 0, x_i becomes a convex combination).
+void relaxRow(const Level& level, int i, RowMatrix& x, const RowMatrix* rhs, Eigen::RowVectorXd& sum)
 {
   if (level.fixedRow[i] >= 0 || level.totals[i] <= 0.0)
     return;
-  const int d = static_cast<int>(x.cols());
-  std::fill(sum.begin(), sum.end(), 0.0);
+  if (rhs)
+    sum = rhs->row(i);
+  else
+    sum.setZero();
   for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
-  {
-    if (it.col() == i)
-      continue;
-    const double w = it.value();
-    const double* neighbour = x.data() + static_cast<std::size_t>(it.col()) * d;
-    for (int k = 0; k < d; ++k)
-      sum[k] += w * neighbour[k];
-  }
-  double* row = x.data() + static_cast<std::size_t>(i) * d;
-  const double scale = 1.0 / level.totals[i];
-  for (int k = 0; k < d; ++k)
-    row[k] = sum[k] * scale;
+    if (it.col() != i)
+      sum.noalias() += it.value() * x.row(it.col());
+  x.row(i) = sum * (1.0 / level.totals[i]);
 }
 
 /// Symmetric Gauss-Seidel: a forward then a backward sweep, so no direction
 /// of the vertex order is favoured.
-void smooth(const Level& level, RowMatrix& x, int sweeps)
+void smooth(const Level& level, RowMatrix& x, const RowMatrix* rhs, int sweeps)
 {
-  std::vector<double> sum(x.cols());
+  Eigen::RowVectorXd sum(x.cols());
   const int n = static_cast<int>(x.rows());
   for (int s = 0; s < sweeps; ++s)
   {
     for (int i = 0; i < n; ++i)
-      relaxRow(level, i, x, sum);
+      relaxRow(level, i, x, rhs, sum);
     for (int i = n - 1; i >= 0; --i)
-      relaxRow(level, i, x, sum);
+      relaxRow(level, i, x, rhs, sum);
   }
+}
+
+/// b - A x on the free rows, summed over each aggregate: the right-hand side
+/// of the next coarser level's correction.
+RowMatrix restrictedResidual(const Level& level, const RowMatrix& x, const RowMatrix* rhs, int coarseCount)
+{
+  RowMatrix coarse = RowMatrix::Zero(coarseCount, x.cols());
+  Eigen::RowVectorXd residual(x.cols());
+  for (int i = 0; i < x.rows(); ++i)
+  {
+    if (level.fixedRow[i] >= 0)
+      continue;
+    residual = -level.totals[i] * x.row(i);
+    if (rhs)
+      residual += rhs->row(i);
+    for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
+      if (it.col() != i)
+        residual.noalias() += it.value() * x.row(it.col());
+    coarse.row(level.aggregate[i]) += residual;
+  }
+  return coarse;
 }
 
 /// Starts a finer level from the values of its aggregates.
@@ -153,14 +168,144 @@ RowMatrix interpolate(const Level& fine, const RowMatrix& coarse, const Eigen::M
   return x;
 }
 
+/// The coarsest level's LU, factorized once and used by every cycle.
+class CoarsestSolver
+{
+public:
+  Status factorize(const Level& level)
+  {
+    const int n = static_cast<int>(level.weights.rows());
+    unknown_.assign(n, -1);
+    int unknowns = 0;
+    for (int i = 0; i < n; ++i)
+      if (level.fixedRow[i] < 0)
+        unknown_[i] = unknowns++;
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n; ++i)
+    {
+      if (unknown_[i] < 0)
+        continue;
+      entries.emplace_back(unknown_[i], unknown_[i], level.totals[i]);
+      for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
+        if (it.col() != i && unknown_[it.col()] >= 0)
+          entries.emplace_back(unknown_[i], unknown_[it.col()], -it.value());
+    }
+    if (unknowns == 0)
+      return {};
+    Eigen::SparseMatrix<double> system(unknowns, unknowns);
+    system.setFromTriplets(entries.begin(), entries.end());
+    lu_.compute(system);
+    if (lu_.info() != Eigen::Success)
+      return Status::error("the mean value system could not be factorized (degenerate geometry?)");
+    unknowns_ = unknowns;
+    return {};
+  }
+
+  /// Solves the level's equations with `x`'s fixed rows as they are.
+  Status solve(const Level& level, RowMatrix& x, const RowMatrix* rhs) const
+  {
+    if (unknowns_ == 0)
+      return {};
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(unknowns_, x.cols());
+    for (int i = 0; i < x.rows(); ++i)
+    {
+      if (unknown_[i] < 0)
+        continue;
+      if (rhs)
+        b.row(unknown_[i]) = rhs->row(i);
+      for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
+        if (it.col() != i && unknown_[it.col()] < 0)
+          b.row(unknown_[i]) += it.value() * x.row(it.col());
+    }
+    const Eigen::MatrixXd solution = lu_.solve(b);
+    if (lu_.info() != Eigen::Success || !solution.allFinite())
+      return Status::error("the mean value system could not be solved");
+    for (int i = 0; i < x.rows(); ++i)
+      if (unknown_[i] >= 0)
+        x.row(i) = solution.row(unknown_[i]);
+    return {};
+  }
+
+private:
+  std::vector<int> unknown_;
+  int unknowns_ = 0;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+};
+
+/// One V-cycle on level `l` for A x = b (fixed rows of `x` untouched): smooth,
+/// correct by the coarser level's solution for the residual, smooth.
+Status cycle(const std::vector<Level>& levels, const CoarsestSolver& coarsest, std::size_t l, RowMatrix& x,
+  const RowMatrix* rhs, const MultilevelOptions& options)
+{
+  const Level& level = levels[l];
+  if (l + 1 == levels.size())
+    return coarsest.solve(level, x, rhs);
+  // The finest level is the expensive one: one cycle there; coarser levels
+  // repeat theirs (a W-cycle), since an inexact coarse correction is what
+  // slows aggregation multigrid down.
+  const int repeats = l == 0 ? 1 : options.coarseCycles;
+  for (int r = 0; r < repeats; ++r)
+  {
+    smooth(level, x, rhs, 1);
+    const int coarseCount = static_cast<int>(levels[l + 1].weights.rows());
+    const RowMatrix coarseRhs = restrictedResidual(level, x, rhs, coarseCount);
+    RowMatrix correction = RowMatrix::Zero(coarseCount, x.cols());
+    if (Status s = cycle(levels, coarsest, l + 1, correction, &coarseRhs, options); !s.ok())
+      return s;
+    for (int i = 0; i < x.rows(); ++i)
+      if (level.fixedRow[i] < 0)
+        x.row(i) += options.correctionScale * correction.row(level.aggregate[i]);
+    smooth(level, x, rhs, 1);
+  }
+  return {};
+}
+
+/// Breadth-first order of the graph (component after component): rows that
+/// are neighbours get nearby numbers, so a sweep reads neighbour rows that are
+/// still in cache. `order[k]` is the old index of new row k.
+std::vector<int> breadthFirstOrder(const RowSparse& weights)
+{
+  const int n = static_cast<int>(weights.rows());
+  std::vector<int> order;
+  order.reserve(n);
+  std::vector<char> visited(n, 0);
+  for (int seed = 0; seed < n; ++seed)
+  {
+    if (visited[seed])
+      continue;
+    visited[seed] = 1;
+    order.push_back(seed);
+    for (std::size_t head = order.size() - 1; head < order.size(); ++head)
+      for (RowSparse::InnerIterator it(weights, order[head]); it; ++it)
+        if (!visited[it.col()])
+        {
+          visited[it.col()] = 1;
+          order.push_back(static_cast<int>(it.col()));
+        }
+  }
+  return order;
+}
+
 } // namespace
 
 Status solveConvexCombinationMultilevel(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
   const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values, const MultilevelOptions& options,
   MultilevelReport* report)
 {
+  // Work in breadth-first order: the input's order (a subdivided mesh puts
+  // new vertices last) can scatter neighbours over the whole array.
+  const int n = static_cast<int>(weights.rows());
+  const std::vector<int> order = breadthFirstOrder(RowSparse(weights));
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> toNew(n);
+  std::vector<int> orderedFixedRow(n);
+  for (int k = 0; k < n; ++k)
+  {
+    toNew.indices()[order[k]] = k;
+    orderedFixedRow[k] = fixedRow[order[k]];
+  }
   std::vector<Level> levels;
-  levels.push_back(makeLevel(RowSparse(weights), fixedRow));
+  const Eigen::SparseMatrix<double> ordered = toNew * weights * toNew.inverse();
+  levels.push_back(makeLevel(RowSparse(ordered), std::move(orderedFixedRow)));
   while (levels.back().unknowns > options.coarsestUnknowns)
   {
     Level coarse = coarsen(levels.back());
@@ -175,20 +320,31 @@ Status solveConvexCombinationMultilevel(const Eigen::SparseMatrix<double>& weigh
     for (const Level& level : levels)
       report->unknownsPerLevel.push_back(level.unknowns);
   }
-  Eigen::MatrixXd coarsest;
-  if (Status s = solveConvexCombinationSystem(Eigen::SparseMatrix<double>(levels.back().weights),
-        levels.back().fixedRow, fixedValues, coarsest);
-      !s.ok())
+  CoarsestSolver coarsest;
+  if (Status s = coarsest.factorize(levels.back()); !s.ok())
     return s;
-  RowMatrix x = coarsest;
+  // Nested start: the coarsest solution, interpolated and smoothed level by
+  // level; then V-cycles on the finest level remove what the coarse levels
+  // got wrong (mostly near the fixed rows).
+  RowMatrix x(levels.back().weights.rows(), fixedValues.cols());
+  for (int i = 0; i < x.rows(); ++i)
+    x.row(i) = levels.back().fixedRow[i] >= 0 ? RowMatrix(fixedValues.row(levels.back().fixedRow[i]))
+                                               : RowMatrix::Zero(1, x.cols());
+  if (Status s = coarsest.solve(levels.back(), x, nullptr); !s.ok())
+    return s;
   for (int l = static_cast<int>(levels.size()) - 2; l >= 0; --l)
   {
     x = interpolate(levels[l], x, fixedValues);
-    smooth(levels[l], x, l == 0 ? options.finestSweeps : options.coarseSweeps);
+    smooth(levels[l], x, nullptr, l == 0 ? options.finestSweeps : options.coarseSweeps);
   }
+  for (int c = 0; c < options.cycles && levels.size() > 1; ++c)
+    if (Status s = cycle(levels, coarsest, 0, x, nullptr, options); !s.ok())
+      return s;
   if (!x.allFinite())
     return Status::error("the mean value system could not be solved");
-  values = x;
+  values.resize(n, x.cols());
+  for (int k = 0; k < n; ++k)
+    values.row(order[k]) = x.row(k);
   return {};
 }
 
