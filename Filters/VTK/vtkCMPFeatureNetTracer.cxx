@@ -7,14 +7,17 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <cmath>
+#include <functional>
 
 vtkStandardNewMacro(vtkCMPFeatureNetTracer);
 
@@ -41,6 +44,49 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType size)
   return array;
 }
 
+/// Per-corner texture coordinates cannot be copied to the pieces of a split
+/// triangle: each corner gets the input triangle's corner values at the
+/// input vertices its split edges go back to.
+void interpolateCornerTCoords(vtkDataArray* corners, vtkDataArray* inputCorners, const cmp::EditableMesh& mesh,
+  vtkPolyData* input)
+{
+  const vtkIdType inputPoints = input->GetNumberOfPoints();
+  vtkNew<vtkIdList> homeCorners;
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    const int home = mesh.inputTriangle(t);
+    input->GetCellPoints(home, homeCorners);
+    // Value of corner `v` in the home triangle; false if a split edge leads
+    // out of it (the copied values are then kept, not extrapolated).
+    const std::function<bool(int, double*)> valueAt = [&](int v, double* uv)
+    {
+      if (v < inputPoints)
+      {
+        const vtkIdType k = homeCorners->IsId(v);
+        if (k < 0)
+          return false;
+        uv[0] = inputCorners->GetComponent(home, 2 * k);
+        uv[1] = inputCorners->GetComponent(home, 2 * k + 1);
+        return true;
+      }
+      const cmp::VertexOrigin& origin = mesh.origin(v);
+      double a[2], b[2];
+      if (!valueAt(origin.a, a) || !valueAt(origin.b, b))
+        return false;
+      for (int i = 0; i < 2; ++i)
+        uv[i] = (1.0 - origin.t) * a[i] + origin.t * b[i];
+      return true;
+    };
+    double values[6];
+    bool inside = true;
+    for (int c = 0; c < 3 && inside; ++c)
+      inside = valueAt(mesh.triangle(t)[c], values + 2 * c);
+    if (inside)
+      for (int i = 0; i < 6; ++i)
+        corners->SetComponent(t, i, values[i]);
+  }
+}
+
 /// The refined surface with the input's arrays carried through and PatchId.
 vtkSmartPointer<vtkPolyData> refinedSurface(const cmp::TracedNet& net, vtkPolyData* input)
 {
@@ -65,6 +111,10 @@ vtkSmartPointer<vtkPolyData> refinedSurface(const cmp::TracedNet& net, vtkPolyDa
   cells->CopyAllocate(input->GetCellData(), mesh.triangleCount());
   for (int t = 0; t < mesh.triangleCount(); ++t)
     cells->CopyData(input->GetCellData(), mesh.inputTriangle(t), t);
+  vtkDataArray* corners = cells->GetArray(cmp::bridge::kCornerTCoordsArray);
+  vtkDataArray* inputCorners = input->GetCellData()->GetArray(cmp::bridge::kCornerTCoordsArray);
+  if (corners && inputCorners && corners->GetNumberOfComponents() == 6)
+    interpolateCornerTCoords(corners, inputCorners, mesh, input);
   auto patchIds = intArray("PatchId", mesh.triangleCount());
   for (int t = 0; t < mesh.triangleCount(); ++t)
     patchIds->SetValue(t, net.patchOfTriangle[t]);

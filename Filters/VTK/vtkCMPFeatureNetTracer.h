@@ -19,8 +19,9 @@
 /// Output 0: the surface, with edges split only where curves needed room, so
 /// every curve runs along mesh edges; every input point array is carried
 /// through (interpolated at new points; `FeatureId` is -1 there), cell
-/// arrays are inherited by the pieces of split triangles, and cell array
-/// `PatchId` holds the `L0` triangle each triangle belongs to.
+/// arrays are inherited by the pieces of split triangles (`CornerTCoords` is
+/// interpolated at their new corners), and cell array `PatchId` holds the
+/// `L0` triangle each triangle belongs to.
 /// Output 1: the net as polylines, one cell per `L0` edge, with cell arrays
 /// `BaseEdgeId`, `FeatureIdA` and `FeatureIdB` (the landmarks at its start
 /// and end). Both carry field arrays `NetLength`, `NetLengthPerSqrtArea`,

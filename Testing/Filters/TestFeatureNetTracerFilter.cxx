@@ -11,6 +11,7 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
@@ -45,6 +46,23 @@ TEST(FeatureNetTracerFilter, TracesModel387AgainstL0From381AndCarriesArraysThrou
   for (vtkIdType c = 0; c < horse->GetNumberOfCells(); ++c)
     cellIds->InsertNextValue(static_cast<int>(c));
   horse->GetCellData()->AddArray(cellIds);
+  // Per-corner texture coordinates (u, v) = (x, z): linear over every input
+  // triangle, so a split triangle's new corners must get their own (x, z).
+  vtkNew<vtkDoubleArray> cornerTCoords;
+  cornerTCoords->SetName("CornerTCoords");
+  cornerTCoords->SetNumberOfComponents(6);
+  cornerTCoords->SetNumberOfTuples(horse->GetNumberOfCells());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < horse->GetNumberOfCells(); ++c)
+  {
+    horse->GetCellPoints(c, ids);
+    for (int k = 0; k < 3; ++k)
+    {
+      cornerTCoords->SetComponent(c, 2 * k, horse->GetPoint(ids->GetId(k))[0]);
+      cornerTCoords->SetComponent(c, 2 * k + 1, horse->GetPoint(ids->GetId(k))[2]);
+    }
+  }
+  horse->GetCellData()->AddArray(cornerTCoords);
 
   vtkNew<vtkCMPFeatureNetTracer> tracer;
   tracer->SetInputData(0, horse);
@@ -81,6 +99,17 @@ TEST(FeatureNetTracerFilter, TracesModel387AgainstL0From381AndCarriesArraysThrou
   for (vtkIdType c = 0; c < patchIds->GetNumberOfTuples(); ++c)
     patches.insert(static_cast<int>(patchIds->GetComponent(c, 0)));
   EXPECT_EQ(patches.size(), 38u);
+  vtkDataArray* cornersOut = surface->GetCellData()->GetArray("CornerTCoords");
+  ASSERT_NE(cornersOut, nullptr);
+  int badCorners = 0;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    for (int k = 0; k < 3; ++k)
+      badCorners += std::abs(cornersOut->GetComponent(c, 2 * k) - surface->GetPoint(ids->GetId(k))[0]) > 1e-9 ||
+        std::abs(cornersOut->GetComponent(c, 2 * k + 1) - surface->GetPoint(ids->GetId(k))[2]) > 1e-9;
+  }
+  EXPECT_EQ(badCorners, 0) << "CornerTCoords not interpolated at the corners of split triangles";
 
   EXPECT_EQ(curves->GetNumberOfLines(), 57);
   vtkDataArray* a = curves->GetCellData()->GetArray("FeatureIdA");
