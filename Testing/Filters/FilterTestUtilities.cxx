@@ -7,6 +7,9 @@
 #include "vtkCMPSurfaceReader.h"
 
 #include <vtkAlgorithm.h>
+#include <vtkIdList.h>
+#include <vtkDoubleArray.h>
+#include <vtkCellData.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkCompositeDataSet.h>
@@ -175,6 +178,42 @@ vtkSmartPointer<vtkPolyData> withNaNAt(vtkPolyData* surface, vtkIdType point)
   copy->DeepCopy(surface);
   copy->GetPoints()->SetPoint(point, std::numeric_limits<double>::quiet_NaN(), 0, 0);
   return copy;
+}
+
+void addCornerTCoords(vtkPolyData* surface, int uAxis, int vAxis)
+{
+  vtkNew<vtkDoubleArray> corners;
+  corners->SetName("CornerTCoords");
+  corners->SetNumberOfComponents(6);
+  corners->SetNumberOfTuples(surface->GetNumberOfCells());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    for (int k = 0; k < 3; ++k)
+    {
+      corners->SetComponent(c, 2 * k, surface->GetPoint(ids->GetId(k))[uAxis]);
+      corners->SetComponent(c, 2 * k + 1, surface->GetPoint(ids->GetId(k))[vAxis]);
+    }
+  }
+  surface->GetCellData()->AddArray(corners);
+}
+
+int cornersNotAtTheirPoints(vtkPolyData* surface, int uAxis, int vAxis, double tolerance)
+{
+  vtkDataArray* corners = surface->GetCellData()->GetArray("CornerTCoords");
+  if (!corners)
+    return static_cast<int>(3 * surface->GetNumberOfCells());
+  int bad = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    for (int k = 0; k < 3; ++k)
+      bad += std::abs(corners->GetComponent(c, 2 * k) - surface->GetPoint(ids->GetId(k))[uAxis]) > tolerance ||
+        std::abs(corners->GetComponent(c, 2 * k + 1) - surface->GetPoint(ids->GetId(k))[vAxis]) > tolerance;
+  }
+  return bad;
 }
 
 } // namespace cmp::test

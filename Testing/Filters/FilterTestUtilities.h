@@ -76,4 +76,14 @@ vtkSmartPointer<vtkMultiBlockDataSet> blocksOf(std::initializer_list<vtkPolyData
 /// \brief A copy of `surface` whose point `point` has a NaN coordinate.
 vtkSmartPointer<vtkPolyData> withNaNAt(vtkPolyData* surface, vtkIdType point);
 
+/// \brief Adds cell array `CornerTCoords`: at every triangle corner, (u, v) =
+///        coordinates `uAxis` and `vAxis` of the corner's point. Linear over
+///        every triangle, so a filter that cuts or splits triangles must give
+///        each new corner its own point's coordinates, not copy the old ones.
+void addCornerTCoords(vtkPolyData* surface, int uAxis, int vAxis);
+
+/// \brief Corners whose `CornerTCoords` differ from coordinates `uAxis` and
+///        `vAxis` of their point by more than `tolerance`.
+int cornersNotAtTheirPoints(vtkPolyData* surface, int uAxis, int vAxis, double tolerance);
+
 } // namespace cmp::test

@@ -46,23 +46,9 @@ TEST(FeatureNetTracerFilter, TracesModel387AgainstL0From381AndCarriesArraysThrou
   for (vtkIdType c = 0; c < horse->GetNumberOfCells(); ++c)
     cellIds->InsertNextValue(static_cast<int>(c));
   horse->GetCellData()->AddArray(cellIds);
-  // Per-corner texture coordinates (u, v) = (x, z): linear over every input
-  // triangle, so a split triangle's new corners must get their own (x, z).
-  vtkNew<vtkDoubleArray> cornerTCoords;
-  cornerTCoords->SetName("CornerTCoords");
-  cornerTCoords->SetNumberOfComponents(6);
-  cornerTCoords->SetNumberOfTuples(horse->GetNumberOfCells());
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < horse->GetNumberOfCells(); ++c)
-  {
-    horse->GetCellPoints(c, ids);
-    for (int k = 0; k < 3; ++k)
-    {
-      cornerTCoords->SetComponent(c, 2 * k, horse->GetPoint(ids->GetId(k))[0]);
-      cornerTCoords->SetComponent(c, 2 * k + 1, horse->GetPoint(ids->GetId(k))[2]);
-    }
-  }
-  horse->GetCellData()->AddArray(cornerTCoords);
+  // Per-corner texture coordinates (u, v) = (x, z): a split triangle's new
+  // corners must get their own (x, z).
+  addCornerTCoords(horse, 0, 2);
 
   vtkNew<vtkCMPFeatureNetTracer> tracer;
   tracer->SetInputData(0, horse);
@@ -99,17 +85,8 @@ TEST(FeatureNetTracerFilter, TracesModel387AgainstL0From381AndCarriesArraysThrou
   for (vtkIdType c = 0; c < patchIds->GetNumberOfTuples(); ++c)
     patches.insert(static_cast<int>(patchIds->GetComponent(c, 0)));
   EXPECT_EQ(patches.size(), 38u);
-  vtkDataArray* cornersOut = surface->GetCellData()->GetArray("CornerTCoords");
-  ASSERT_NE(cornersOut, nullptr);
-  int badCorners = 0;
-  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
-  {
-    surface->GetCellPoints(c, ids);
-    for (int k = 0; k < 3; ++k)
-      badCorners += std::abs(cornersOut->GetComponent(c, 2 * k) - surface->GetPoint(ids->GetId(k))[0]) > 1e-9 ||
-        std::abs(cornersOut->GetComponent(c, 2 * k + 1) - surface->GetPoint(ids->GetId(k))[2]) > 1e-9;
-  }
-  EXPECT_EQ(badCorners, 0) << "CornerTCoords not interpolated at the corners of split triangles";
+  EXPECT_EQ(cornersNotAtTheirPoints(surface, 0, 2, 1e-9), 0)
+    << "CornerTCoords not interpolated at the corners of split triangles";
 
   EXPECT_EQ(curves->GetNumberOfLines(), 57);
   vtkDataArray* a = curves->GetCellData()->GetArray("FeatureIdA");
