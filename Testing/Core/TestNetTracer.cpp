@@ -189,6 +189,17 @@ TEST(NetTracer, EveryRealModelWithL0From381AndFromSpot)
   }
 }
 
+/// Whether one of `problems` contains `text`; prints them if not.
+bool mentions(const std::vector<std::string>& problems, const std::string& text)
+{
+  for (const std::string& problem : problems)
+    if (problem.find(text) != std::string::npos)
+      return true;
+  for (const std::string& problem : problems)
+    std::cout << "  problem: " << problem << "\n";
+  return false;
+}
+
 TEST(NetValidator, CatchesBrokenLayouts)
 {
   const TriangleMesh sphere = bumpySphere(3);
@@ -202,20 +213,27 @@ TEST(NetValidator, CatchesBrokenLayouts)
   LabelledSurface swapped = good; // two whole patches exchange labels
   for (int& p : swapped.patchId)
     p = p == 0 ? 1 : p == 1 ? 0 : p;
-  EXPECT_FALSE(validateLayout(swapped, base).empty());
+  EXPECT_TRUE(mentions(validateLayout(swapped, base), "patch 0: its boundary passes landmarks"));
 
   LabelledSurface stray = good; // one triangle inside patch 0 claims patch 7
   const auto inside = std::find(stray.patchId.begin(), stray.patchId.end(), 0) - stray.patchId.begin();
   stray.patchId[inside] = 7;
-  EXPECT_FALSE(validateLayout(stray, base).empty());
+  EXPECT_TRUE(mentions(validateLayout(stray, base), "patch 7: "));
 
   BaseTriangles mirrored = base; // the base domain with reversed orientation
   for (auto& t : mirrored.triangles)
     std::swap(t[1], t[2]);
-  EXPECT_FALSE(validateLayout(good, mirrored).empty());
+  EXPECT_TRUE(mentions(validateLayout(good, mirrored), "in that order"));
 
   LabelledSurface merged = good; // patch 2 swallowed by patch 3: 3 is no longer a 3-landmark disk
   for (int& p : merged.patchId)
     p = p == 2 ? 3 : p;
-  EXPECT_FALSE(validateLayout(merged, base).empty());
+  const std::vector<std::string> mergedProblems = validateLayout(merged, base);
+  EXPECT_TRUE(mentions(mergedProblems, "patch 2: has no triangles"));
+  EXPECT_TRUE(mentions(mergedProblems, "patch 3: its boundary passes landmarks"));
+  EXPECT_TRUE(mentions(mergedProblems, "should share a curve but do not touch"));
+
+  LabelledSurface outOfRange = good;
+  outOfRange.patchId[5] = 8;
+  EXPECT_TRUE(mentions(validateLayout(outOfRange, base), "triangle 5 has PatchId 8"));
 }
