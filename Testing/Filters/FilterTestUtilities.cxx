@@ -182,6 +182,12 @@ vtkSmartPointer<vtkPolyData> withNaNAt(vtkPolyData* surface, vtkIdType point)
 
 void addCornerTCoords(vtkPolyData* surface, int uAxis, int vAxis)
 {
+  addCornerTCoords(surface, [&](const double* point, vtkIdType) { return std::array<double, 2>{ point[uAxis], point[vAxis] }; });
+}
+
+void addCornerTCoords(
+  vtkPolyData* surface, const std::function<std::array<double, 2>(const double* point, vtkIdType cell)>& uvAt)
+{
   vtkNew<vtkDoubleArray> corners;
   corners->SetName("CornerTCoords");
   corners->SetNumberOfComponents(6);
@@ -192,8 +198,9 @@ void addCornerTCoords(vtkPolyData* surface, int uAxis, int vAxis)
     surface->GetCellPoints(c, ids);
     for (int k = 0; k < 3; ++k)
     {
-      corners->SetComponent(c, 2 * k, surface->GetPoint(ids->GetId(k))[uAxis]);
-      corners->SetComponent(c, 2 * k + 1, surface->GetPoint(ids->GetId(k))[vAxis]);
+      const std::array<double, 2> uv = uvAt(surface->GetPoint(ids->GetId(k)), c);
+      corners->SetComponent(c, 2 * k, uv[0]);
+      corners->SetComponent(c, 2 * k + 1, uv[1]);
     }
   }
   surface->GetCellData()->AddArray(corners);

@@ -7,6 +7,8 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -81,6 +83,12 @@ vtkSmartPointer<vtkPolyData> withNaNAt(vtkPolyData* surface, vtkIdType point);
 ///        every triangle, so a filter that cuts or splits triangles must give
 ///        each new corner its own point's coordinates, not copy the old ones.
 void addCornerTCoords(vtkPolyData* surface, int uAxis, int vAxis);
+
+/// \brief Adds cell array `CornerTCoords` with (u, v) = `uvAt(point, cell)`
+///        at every corner: `point` is the corner's coordinates, `cell` its
+///        triangle.
+void addCornerTCoords(
+  vtkPolyData* surface, const std::function<std::array<double, 2>(const double* point, vtkIdType cell)>& uvAt);
 
 /// \brief Corners whose `CornerTCoords` differ from coordinates `uAxis` and
 ///        `vAxis` of their point by more than `tolerance`.

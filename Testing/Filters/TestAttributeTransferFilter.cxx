@@ -244,28 +244,14 @@ TEST_F(AttributeTransferOnExamples, LandmarksReadTheSourcesLandmarkValues)
 
 /// A copy of a parameterized surface textured as an atlas with one chart
 /// per patch: (u, v) = (0.1 (x + PatchId), 0.1 y) at every corner, so the
-/// texture jumps across every curve of the net (values below 1 keep float
-/// storage exact to 1e-7).
+/// texture jumps across every curve of the net.
 vtkSmartPointer<vtkPolyData> withOneChartPerPatch(vtkPolyData* parameterized)
 {
   auto atlas = vtkSmartPointer<vtkPolyData>::New();
   atlas->DeepCopy(parameterized);
   vtkDataArray* patchIds = atlas->GetCellData()->GetArray("PatchId");
-  vtkNew<vtkFloatArray> corners;
-  corners->SetName("CornerTCoords");
-  corners->SetNumberOfComponents(6);
-  corners->SetNumberOfTuples(atlas->GetNumberOfCells());
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType t = 0; t < atlas->GetNumberOfCells(); ++t)
-  {
-    atlas->GetCellPoints(t, ids);
-    for (int k = 0; k < 3; ++k)
-    {
-      corners->SetComponent(t, 2 * k, 0.1 * (atlas->GetPoint(ids->GetId(k))[0] + patchIds->GetComponent(t, 0)));
-      corners->SetComponent(t, 2 * k + 1, 0.1 * atlas->GetPoint(ids->GetId(k))[1]);
-    }
-  }
-  atlas->GetCellData()->AddArray(corners);
+  addCornerTCoords(atlas, [&](const double* point, vtkIdType cell)
+    { return std::array<double, 2>{ 0.1 * (point[0] + patchIds->GetComponent(cell, 0)), 0.1 * point[1] }; });
   return atlas;
 }
 
