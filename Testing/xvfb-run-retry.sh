@@ -1,25 +1,41 @@
 #!/usr/bin/env bash
-# xvfb-run, run once more when the X server it started could not be reached.
+# xvfb-run for the rendering tests: a display number not used by the tests
+# just before, and one more run when the X server could not be reached.
 #
 # Each rendering test starts its own Xvfb with `xvfb-run -a`, and the tests
-# take turns (RESOURCE_LOCK). Still, now and then a test aborts at its first
-# render window with "bad X server connection" (seen right after another
-# test's Xvfb on the same display number; xvfb-run stops its server without
-# waiting for it to exit). That message means our code never ran, so running
-# the test again is honest; any other failure is passed on as it is.
+# take turns (RESOURCE_LOCK). With `-a` alone every test starts its search at
+# display 99, so a test gets the number the previous test's Xvfb has just
+# released (xvfb-run stops its server without waiting for it to exit). Tests
+# then aborted at their first render window with "bad X server connection"
+# (seen twice on 2026-11-24, each time right after another test had used
+# the same display). So the search starts at a number that moves on with
+# every run (a counter in the temporary folder, 100 to 499), and a test that
+# stops with that message, which means our code never ran, runs once more
+# on the next number. Any other failure is passed on as it is.
 set -u
+counter_file="${TMPDIR:-/tmp}/cmp-xvfb-display-counter"
 stderr_log=$(mktemp)
 trap 'rm -f "$stderr_log"' EXIT
+
+next_display() {
+  local last
+  last=$(cat "$counter_file" 2>/dev/null || echo 0)
+  case "$last" in '' | *[!0-9]*) last=0 ;; esac
+  local next=$(((last + 1) % 400))
+  echo "$next" >"$counter_file" 2>/dev/null || true
+  echo $((100 + next))
+}
+
+status=1
 for attempt in 1 2; do
-  xvfb-run "$@" 2>"$stderr_log"
+  xvfb-run --server-num="$(next_display)" "$@" 2>"$stderr_log"
   status=$?
   cat "$stderr_log" >&2
   if [ "$status" -eq 0 ] || ! grep -q "bad X server connection" "$stderr_log"; then
     exit "$status"
   fi
   if [ "$attempt" -eq 1 ]; then
-    echo "xvfb-run-retry: the X server could not be reached; running again once" >&2
-    sleep 2
+    echo "xvfb-run-retry: the X server could not be reached; running again once on another display" >&2
   fi
 done
 exit "$status"
