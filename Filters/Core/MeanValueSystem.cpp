@@ -1,7 +1,6 @@
 #include "MeanValueSystem.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/SparseLU>
 
 namespace cmp
 {
@@ -37,55 +36,79 @@ Eigen::SparseMatrix<double> meanValueWeights(const TriangleMesh& mesh)
   return weights;
 }
 
-Status solveConvexCombinationSystem(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
-  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
+Status ConvexCombinationSolver::factorize(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow)
 {
   const int n = static_cast<int>(weights.rows());
-  const int d = static_cast<int>(fixedValues.cols());
-  std::vector<int> unknown(n, -1);
-  int unknowns = 0;
+  fixedRow_ = fixedRow;
+  unknown_.assign(n, -1);
+  unknowns_ = 0;
   for (int v = 0; v < n; ++v)
     if (fixedRow[v] < 0)
-      unknown[v] = unknowns++;
+      unknown_[v] = unknowns_++;
 
-  // Row i: sum_j w_ij (x_i - x_j) = 0; known x_j go to the right-hand side.
+  // Row i: sum_j w_ij (x_i - x_j) = b_i; known x_j go to the right-hand side.
   // Column-major storage: iterate columns j, entries (i, j).
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(2 * static_cast<std::size_t>(weights.nonZeros()));
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, d);
+  couplings_.clear();
   for (int j = 0; j < weights.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(weights, j); it; ++it)
     {
       const int i = static_cast<int>(it.row());
-      if (unknown[i] < 0)
+      if (unknown_[i] < 0)
         continue;
       const double w = it.value();
-      entries.emplace_back(unknown[i], unknown[i], w);
-      if (unknown[j] >= 0)
-        entries.emplace_back(unknown[i], unknown[j], -w);
+      entries.emplace_back(unknown_[i], unknown_[i], w);
+      if (unknown_[j] >= 0)
+        entries.emplace_back(unknown_[i], unknown_[j], -w);
       else
-        rhs.row(unknown[i]) += w * fixedValues.row(fixedRow[j]);
+        couplings_.push_back({ unknown_[i], fixedRow[j], w });
     }
+  if (unknowns_ == 0) // Eigen's SparseLU divides by zero on an empty system
+    return {};
+  Eigen::SparseMatrix<double> system(unknowns_, unknowns_);
+  system.setFromTriplets(entries.begin(), entries.end());
+  lu_.compute(system);
+  if (lu_.info() != Eigen::Success)
+    return Status::error("the mean value system could not be factorized (degenerate geometry?)");
+  return {};
+}
+
+Status ConvexCombinationSolver::solve(
+  const Eigen::MatrixXd& fixedValues, const Eigen::MatrixXd* rhs, Eigen::MatrixXd& values) const
+{
+  const int n = static_cast<int>(unknown_.size());
+  const int d = static_cast<int>(fixedValues.cols());
   Eigen::MatrixXd solution;
-  if (unknowns > 0) // Eigen's SparseLU divides by zero on an empty system
+  if (unknowns_ > 0)
   {
-    Eigen::SparseMatrix<double> system(unknowns, unknowns);
-    system.setFromTriplets(entries.begin(), entries.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-    solver.compute(system);
-    if (solver.info() != Eigen::Success)
-      return Status::error("the mean value system could not be factorized (degenerate geometry?)");
-    solution = solver.solve(rhs);
-    if (solver.info() != Eigen::Success || !solution.allFinite())
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(unknowns_, d);
+    if (rhs)
+      for (int v = 0; v < n; ++v)
+        if (unknown_[v] >= 0)
+          b.row(unknown_[v]) = rhs->row(v);
+    for (const Coupling& c : couplings_)
+      b.row(c.unknown) += c.weight * fixedValues.row(c.fixedRow);
+    solution = lu_.solve(b);
+    if (lu_.info() != Eigen::Success || !solution.allFinite())
       return Status::error("the mean value system could not be solved");
   }
   values.resize(n, d);
   for (int v = 0; v < n; ++v)
-    if (unknown[v] >= 0)
-      values.row(v) = solution.row(unknown[v]);
+    if (unknown_[v] >= 0)
+      values.row(v) = solution.row(unknown_[v]);
     else
-      values.row(v) = fixedValues.row(fixedRow[v]);
+      values.row(v) = fixedValues.row(fixedRow_[v]);
   return {};
+}
+
+Status solveConvexCombinationSystem(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
+{
+  ConvexCombinationSolver solver;
+  if (Status s = solver.factorize(weights, fixedRow); !s.ok())
+    return s;
+  return solver.solve(fixedValues, nullptr, values);
 }
 
 Status solveMeanValueSystem(const TriangleMesh& mesh, const std::vector<int>& fixedRow,

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 #include <vector>
 
@@ -31,6 +32,38 @@ Eigen::SparseMatrix<double> meanValueWeights(const TriangleMesh& mesh);
 /// without neighbours must be fixed.
 Status solveConvexCombinationSystem(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
   const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values);
+
+/// \brief The system of `solveConvexCombinationSystem()`, factorized once
+///        and solved for any fixed values and right-hand sides (a multigrid
+///        solver's coarsest level is solved again in every cycle).
+class ConvexCombinationSolver
+{
+public:
+  /// \brief Factorizes sum_j W(v, j) (x_v - x_j) = b_v for every vertex v
+  ///        with `fixedRow[v] < 0`; the other vertices are known.
+  Status factorize(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow);
+
+  /// \brief `values` becomes n x d: a fixed vertex v gets
+  ///        `fixedValues.row(fixedRow[v])`, the free ones solve the system
+  ///        with b = the matching rows of `rhs` (n x d, any values on fixed
+  ///        rows), or b = 0 if `rhs` is null.
+  Status solve(const Eigen::MatrixXd& fixedValues, const Eigen::MatrixXd* rhs, Eigen::MatrixXd& values) const;
+
+private:
+  /// w_vj from free vertex v (as unknown `unknown`) to fixed vertex j (row
+  /// `fixedRow` of the fixed values), in the order the weights list them.
+  struct Coupling
+  {
+    int unknown;
+    int fixedRow;
+    double weight;
+  };
+  std::vector<int> fixedRow_;
+  std::vector<int> unknown_; ///< Unknown of each free vertex, -1 for fixed ones.
+  int unknowns_ = 0;
+  std::vector<Coupling> couplings_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+};
 
 /// \brief `solveConvexCombinationSystem()` with `meanValueWeights(mesh)`.
 Status solveMeanValueSystem(const TriangleMesh& mesh, const std::vector<int>& fixedRow,

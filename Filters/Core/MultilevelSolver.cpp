@@ -1,6 +1,6 @@
 #include "MultilevelSolver.h"
 
-#include <Eigen/SparseLU>
+#include "MeanValueSystem.h"
 
 #include <algorithm>
 
@@ -107,6 +107,14 @@ Level coarsen(Level& fine)
   return makeLevel(std::move(weights), std::move(fixedRow));
 }
 
+/// sum_j w_ij x_j over the neighbours j of row i, added to `sum`.
+void addWeightedNeighbours(const Level& level, int i, const RowMatrix& x, Eigen::RowVectorXd& sum)
+{
+  for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
+    if (it.col() != i)
+      sum.noalias() += it.value() * x.row(it.col());
+}
+
 /// Solves row i of totals_i x_i - sum_j w_ij x_j = b_i for x_i, all columns
 /// at once (`rhs` null: b = 0, x_i becomes a convex combination).
 void relaxRow(const Level& level, int i, RowMatrix& x, const RowMatrix* rhs, Eigen::RowVectorXd& sum)
@@ -117,9 +125,7 @@ void relaxRow(const Level& level, int i, RowMatrix& x, const RowMatrix* rhs, Eig
     sum = rhs->row(i);
   else
     sum.setZero();
-  for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
-    if (it.col() != i)
-      sum.noalias() += it.value() * x.row(it.col());
+  addWeightedNeighbours(level, i, x, sum);
   x.row(i) = sum * (1.0 / level.totals[i]);
 }
 
@@ -151,9 +157,7 @@ RowMatrix restrictedResidual(const Level& level, const RowMatrix& x, const RowMa
     residual = -level.totals[i] * x.row(i);
     if (rhs)
       residual += rhs->row(i);
-    for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
-      if (it.col() != i)
-        residual.noalias() += it.value() * x.row(it.col());
+    addWeightedNeighbours(level, i, x, residual);
     coarse.row(level.aggregate[i]) += residual;
   }
   return coarse;
@@ -168,78 +172,31 @@ RowMatrix interpolate(const Level& fine, const RowMatrix& coarse, const Eigen::M
   return x;
 }
 
-/// The coarsest level's LU, factorized once and used by every cycle.
-class CoarsestSolver
+/// The levels, finest first, and the coarsest one's factorization.
+struct Hierarchy
 {
-public:
-  Status factorize(const Level& level)
-  {
-    const int n = static_cast<int>(level.weights.rows());
-    unknown_.assign(n, -1);
-    int unknowns = 0;
-    for (int i = 0; i < n; ++i)
-      if (level.fixedRow[i] < 0)
-        unknown_[i] = unknowns++;
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int i = 0; i < n; ++i)
-    {
-      if (unknown_[i] < 0)
-        continue;
-      entries.emplace_back(unknown_[i], unknown_[i], level.totals[i]);
-      for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
-        if (it.col() != i && unknown_[it.col()] >= 0)
-          entries.emplace_back(unknown_[i], unknown_[it.col()], -it.value());
-    }
-    if (unknowns == 0)
-      return {};
-    Eigen::SparseMatrix<double> system(unknowns, unknowns);
-    system.setFromTriplets(entries.begin(), entries.end());
-    lu_.compute(system);
-    if (lu_.info() != Eigen::Success)
-      return Status::error("the mean value system could not be factorized (degenerate geometry?)");
-    unknowns_ = unknowns;
-    return {};
-  }
-
-  /// Solves the level's equations with `x`'s fixed rows as they are.
-  Status solve(const Level& level, RowMatrix& x, const RowMatrix* rhs) const
-  {
-    if (unknowns_ == 0)
-      return {};
-    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(unknowns_, x.cols());
-    for (int i = 0; i < x.rows(); ++i)
-    {
-      if (unknown_[i] < 0)
-        continue;
-      if (rhs)
-        b.row(unknown_[i]) = rhs->row(i);
-      for (RowSparse::InnerIterator it(level.weights, i); it; ++it)
-        if (it.col() != i && unknown_[it.col()] < 0)
-          b.row(unknown_[i]) += it.value() * x.row(it.col());
-    }
-    const Eigen::MatrixXd solution = lu_.solve(b);
-    if (lu_.info() != Eigen::Success || !solution.allFinite())
-      return Status::error("the mean value system could not be solved");
-    for (int i = 0; i < x.rows(); ++i)
-      if (unknown_[i] >= 0)
-        x.row(i) = solution.row(unknown_[i]);
-    return {};
-  }
-
-private:
-  std::vector<int> unknown_;
-  int unknowns_ = 0;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  std::vector<Level> levels;
+  ConvexCombinationSolver coarsest;
+  Eigen::MatrixXd zeroFixedValues; ///< A correction is 0 on the fixed rows.
 };
 
 /// One V-cycle on level `l` for A x = b (fixed rows of `x` untouched): smooth,
 /// correct by the coarser level's solution for the residual, smooth.
-Status cycle(const std::vector<Level>& levels, const CoarsestSolver& coarsest, std::size_t l, RowMatrix& x,
-  const RowMatrix* rhs, const MultilevelOptions& options)
+Status cycle(const Hierarchy& hierarchy, std::size_t l, RowMatrix& x, const RowMatrix* rhs,
+  const MultilevelOptions& options)
 {
+  const std::vector<Level>& levels = hierarchy.levels;
   const Level& level = levels[l];
   if (l + 1 == levels.size())
-    return coarsest.solve(level, x, rhs);
+  {
+    // Only corrections come here: zero on the fixed rows.
+    const Eigen::MatrixXd b = *rhs;
+    Eigen::MatrixXd solution;
+    if (Status s = hierarchy.coarsest.solve(hierarchy.zeroFixedValues, &b, solution); !s.ok())
+      return s;
+    x = solution;
+    return {};
+  }
   // The finest level is the expensive one: one cycle there; coarser levels
   // repeat theirs (a W-cycle), since an inexact coarse correction is what
   // slows aggregation multigrid down.
@@ -250,7 +207,7 @@ Status cycle(const std::vector<Level>& levels, const CoarsestSolver& coarsest, s
     const int coarseCount = static_cast<int>(levels[l + 1].weights.rows());
     const RowMatrix coarseRhs = restrictedResidual(level, x, rhs, coarseCount);
     RowMatrix correction = RowMatrix::Zero(coarseCount, x.cols());
-    if (Status s = cycle(levels, coarsest, l + 1, correction, &coarseRhs, options); !s.ok())
+    if (Status s = cycle(hierarchy, l + 1, correction, &coarseRhs, options); !s.ok())
       return s;
     for (int i = 0; i < x.rows(); ++i)
       if (level.fixedRow[i] < 0)
@@ -303,7 +260,8 @@ Status solveConvexCombinationMultilevel(const Eigen::SparseMatrix<double>& weigh
     toNew.indices()[order[k]] = k;
     orderedFixedRow[k] = fixedRow[order[k]];
   }
-  std::vector<Level> levels;
+  Hierarchy hierarchy;
+  std::vector<Level>& levels = hierarchy.levels;
   const Eigen::SparseMatrix<double> ordered = toNew * weights * toNew.inverse();
   levels.push_back(makeLevel(RowSparse(ordered), std::move(orderedFixedRow)));
   while (levels.back().unknowns > options.coarsestUnknowns)
@@ -320,25 +278,24 @@ Status solveConvexCombinationMultilevel(const Eigen::SparseMatrix<double>& weigh
     for (const Level& level : levels)
       report->unknownsPerLevel.push_back(level.unknowns);
   }
-  CoarsestSolver coarsest;
-  if (Status s = coarsest.factorize(levels.back()); !s.ok())
+  if (Status s = hierarchy.coarsest.factorize(Eigen::SparseMatrix<double>(levels.back().weights), levels.back().fixedRow);
+      !s.ok())
     return s;
+  hierarchy.zeroFixedValues = Eigen::MatrixXd::Zero(fixedValues.rows(), fixedValues.cols());
   // Nested start: the coarsest solution, interpolated and smoothed level by
   // level; then V-cycles on the finest level remove what the coarse levels
   // got wrong (mostly near the fixed rows).
-  RowMatrix x(levels.back().weights.rows(), fixedValues.cols());
-  for (int i = 0; i < x.rows(); ++i)
-    x.row(i) = levels.back().fixedRow[i] >= 0 ? RowMatrix(fixedValues.row(levels.back().fixedRow[i]))
-                                               : RowMatrix::Zero(1, x.cols());
-  if (Status s = coarsest.solve(levels.back(), x, nullptr); !s.ok())
+  Eigen::MatrixXd coarsest;
+  if (Status s = hierarchy.coarsest.solve(fixedValues, nullptr, coarsest); !s.ok())
     return s;
+  RowMatrix x = coarsest;
   for (int l = static_cast<int>(levels.size()) - 2; l >= 0; --l)
   {
     x = interpolate(levels[l], x, fixedValues);
     smooth(levels[l], x, nullptr, l == 0 ? options.finestSweeps : options.coarseSweeps);
   }
   for (int c = 0; c < options.cycles && levels.size() > 1; ++c)
-    if (Status s = cycle(levels, coarsest, 0, x, nullptr, options); !s.ok())
+    if (Status s = cycle(hierarchy, 0, x, nullptr, options); !s.ok())
       return s;
   if (!x.allFinite())
     return Status::error("the mean value system could not be solved");
