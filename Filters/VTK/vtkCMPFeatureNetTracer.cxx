@@ -7,17 +7,14 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
-#include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <cmath>
-#include <functional>
 
 vtkStandardNewMacro(vtkCMPFeatureNetTracer);
 
@@ -44,51 +41,39 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType size)
   return array;
 }
 
-/// Per-corner texture coordinates cannot be copied to the pieces of a split
-/// triangle: each corner gets the input triangle's corner values at the
-/// input vertices its split edges go back to.
-void interpolateCornerTCoords(vtkDataArray* corners, vtkDataArray* inputCorners, const cmp::EditableMesh& mesh,
-  vtkPolyData* input)
+/// Where vertex `v` of the traced mesh lies on the input surface: input
+/// vertices are themselves, split vertices the blend of their edge's ends.
+/// A point needing more than three input vertices (never, since splits stay
+/// inside input triangles) comes back without vertices.
+cmp::SurfacePoint inputPointOf(const cmp::EditableMesh& mesh, int v, int inputPoints)
 {
-  const vtkIdType inputPoints = input->GetNumberOfPoints();
-  vtkNew<vtkIdList> homeCorners;
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-  {
-    const int home = mesh.inputTriangle(t);
-    input->GetCellPoints(home, homeCorners);
-    // Value of corner `v` in the home triangle; false if a split edge leads
-    // out of it (the copied values are then kept, not extrapolated).
-    const std::function<bool(int, double*)> valueAt = [&](int v, double* uv)
+  if (v < inputPoints)
+    return cmp::SurfacePoint::at(v);
+  const cmp::VertexOrigin& origin = mesh.origin(v);
+  const cmp::SurfacePoint a = inputPointOf(mesh, origin.a, inputPoints);
+  const cmp::SurfacePoint b = inputPointOf(mesh, origin.b, inputPoints);
+  cmp::SurfacePoint blend;
+  int used = 0;
+  for (const auto& [end, share] : { std::make_pair(&a, 1.0 - origin.t), std::make_pair(&b, origin.t) })
+    for (int k = 0; k < 3; ++k)
     {
-      if (v < inputPoints)
-      {
-        const vtkIdType k = homeCorners->IsId(v);
-        if (k < 0)
-          return false;
-        uv[0] = inputCorners->GetComponent(home, 2 * k);
-        uv[1] = inputCorners->GetComponent(home, 2 * k + 1);
-        return true;
-      }
-      const cmp::VertexOrigin& origin = mesh.origin(v);
-      double a[2], b[2];
-      if (!valueAt(origin.a, a) || !valueAt(origin.b, b))
-        return false;
-      for (int i = 0; i < 2; ++i)
-        uv[i] = (1.0 - origin.t) * a[i] + origin.t * b[i];
-      return true;
-    };
-    double values[6];
-    bool inside = true;
-    for (int c = 0; c < 3 && inside; ++c)
-      inside = valueAt(mesh.triangle(t)[c], values + 2 * c);
-    if (inside)
-      for (int i = 0; i < 6; ++i)
-        corners->SetComponent(t, i, values[i]);
-  }
+      if (end->vertex[k] < 0)
+        continue;
+      int slot = 0;
+      while (slot < used && blend.vertex[slot] != end->vertex[k])
+        ++slot;
+      if (slot == 3)
+        return {};
+      if (slot == used)
+        blend.vertex[used++] = end->vertex[k];
+      blend.weight[slot] += share * end->weight[k];
+    }
+  return blend;
 }
 
 /// The refined surface with the input's arrays carried through and PatchId.
-vtkSmartPointer<vtkPolyData> refinedSurface(const cmp::TracedNet& net, vtkPolyData* input)
+vtkSmartPointer<vtkPolyData> refinedSurface(
+  const cmp::TracedNet& net, vtkPolyData* input, const cmp::TriangleMesh& inputMesh)
 {
   const cmp::EditableMesh& mesh = net.mesh;
   vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(mesh.toTriangleMesh());
@@ -114,7 +99,9 @@ vtkSmartPointer<vtkPolyData> refinedSurface(const cmp::TracedNet& net, vtkPolyDa
   vtkDataArray* corners = cells->GetArray(cmp::bridge::kCornerTCoordsArray);
   vtkDataArray* inputCorners = input->GetCellData()->GetArray(cmp::bridge::kCornerTCoordsArray);
   if (corners && inputCorners && corners->GetNumberOfComponents() == 6)
-    interpolateCornerTCoords(corners, inputCorners, mesh, input);
+    cmp::bridge::interpolateCornerTCoords(corners, inputCorners, inputMesh, mesh.triangleCount(),
+      [&](int t) { return mesh.inputTriangle(t); },
+      [&](int t, int c) { return inputPointOf(mesh, mesh.triangle(t)[c], static_cast<int>(inputPoints)); });
   auto patchIds = intArray("PatchId", mesh.triangleCount());
   for (int t = 0; t < mesh.triangleCount(); ++t)
     patchIds->SetValue(t, net.patchOfTriangle[t]);
@@ -173,7 +160,7 @@ int vtkCMPFeatureNetTracer::RequestData(
   const bool valid = layoutIsValid(net, domain, problem);
   if (!valid)
     vtkWarningMacro(<< model << "the traced net failed the layout check: " << problem);
-  surfaceOutput->ShallowCopy(refinedSurface(net, input));
+  surfaceOutput->ShallowCopy(refinedSurface(net, input, mesh));
   curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(net, domain));
   const double lengthPerSqrtArea = report.netLength / std::sqrt(cmp::surfaceArea(mesh));
   for (vtkPolyData* output : { surfaceOutput, curvesOutput })

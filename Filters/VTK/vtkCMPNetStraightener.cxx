@@ -125,42 +125,6 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const cmp::Straigh
   points->AddArray(baseCoordinates);
 }
 
-/// Per-corner texture coordinates cannot be copied to the pieces of a cut
-/// triangle: each new corner gets the input triangle's corner values
-/// combined with the weights of its input location.
-void interpolateCornerTCoords(vtkDataArray* corners, vtkDataArray* inputCorners, const cmp::TriangleMesh& input,
-  const cmp::StraightenedNet& straight)
-{
-  const cmp::EditableMesh& mesh = straight.net.mesh;
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-  {
-    const int home = straight.inputTriangle[t];
-    const cmp::Triangle& homeCorners = input.triangles[home];
-    double values[6] = { 0, 0, 0, 0, 0, 0 };
-    bool inside = true;
-    for (int c = 0; c < 3 && inside; ++c)
-    {
-      const cmp::SurfacePoint& at = straight.inputPoint[mesh.triangle(t)[c]];
-      for (int k = 0; k < 3 && inside; ++k)
-      {
-        if (at.vertex[k] < 0)
-          continue;
-        const auto corner = std::find(homeCorners.begin(), homeCorners.end(), at.vertex[k]);
-        inside = corner != homeCorners.end();
-        if (inside)
-          for (int uv = 0; uv < 2; ++uv)
-            values[2 * c + uv] +=
-              at.weight[k] * inputCorners->GetComponent(home, 2 * static_cast<int>(corner - homeCorners.begin()) + uv);
-      }
-    }
-    // A corner outside its triangle's input triangle would break the core's
-    // contract; the copied values are then kept rather than extrapolated.
-    if (inside)
-      for (int i = 0; i < 6; ++i)
-        corners->SetComponent(t, i, values[i]);
-  }
-}
-
 /// Cell data of the straightened surface: every input array copied from the
 /// input triangle each triangle lies in, and the new PatchId.
 void fillCellData(vtkCellData* cells, vtkCellData* input, const cmp::TriangleMesh& inputMesh,
@@ -176,7 +140,9 @@ void fillCellData(vtkCellData* cells, vtkCellData* input, const cmp::TriangleMes
   vtkDataArray* corners = cells->GetArray(cmp::bridge::kCornerTCoordsArray);
   vtkDataArray* inputCorners = input->GetArray(cmp::bridge::kCornerTCoordsArray);
   if (corners && inputCorners && corners->GetNumberOfComponents() == 6)
-    interpolateCornerTCoords(corners, inputCorners, inputMesh, straight);
+    cmp::bridge::interpolateCornerTCoords(corners, inputCorners, inputMesh, triangles,
+      [&](int t) { return straight.inputTriangle[t]; },
+      [&](int t, int c) { return straight.inputPoint[straight.net.mesh.triangle(t)[c]]; });
 
   vtkNew<vtkIntArray> patchIds;
   patchIds->SetName(cmp::bridge::kPatchIdArray);

@@ -270,4 +270,37 @@ void copySourceFile(vtkDataObject* from, vtkDataObject* to)
     setFieldString(to->GetFieldData(), kSourceFileArray, name);
 }
 
+void interpolateCornerTCoords(vtkDataArray* corners, vtkDataArray* inputCorners, const TriangleMesh& input,
+  int pieces, const std::function<int(int)>& homeOf, const std::function<SurfacePoint(int, int)>& cornerPoint)
+{
+  for (int t = 0; t < pieces; ++t)
+  {
+    const int home = homeOf(t);
+    const Triangle& homeCorners = input.triangles[home];
+    double values[6] = { 0, 0, 0, 0, 0, 0 };
+    bool inside = true;
+    for (int c = 0; c < 3 && inside; ++c)
+    {
+      const SurfacePoint at = cornerPoint(t, c);
+      inside = at.supportSize() > 0;
+      for (int k = 0; k < 3 && inside; ++k)
+      {
+        if (at.vertex[k] < 0)
+          continue;
+        const auto corner = std::find(homeCorners.begin(), homeCorners.end(), at.vertex[k]);
+        inside = corner != homeCorners.end();
+        if (inside)
+          for (int uv = 0; uv < 2; ++uv)
+            values[2 * c + uv] +=
+              at.weight[k] * inputCorners->GetComponent(home, 2 * static_cast<int>(corner - homeCorners.begin()) + uv);
+      }
+    }
+    // A corner outside its home triangle would break the caller's contract;
+    // the copied values are then kept rather than extrapolated.
+    if (inside)
+      for (int i = 0; i < 6; ++i)
+        corners->SetComponent(t, i, values[i]);
+  }
+}
+
 } // namespace cmp::bridge

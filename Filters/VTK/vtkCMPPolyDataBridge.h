@@ -5,15 +5,18 @@
 
 #include "BaseDomain.h"
 #include "Landmarks.h"
+#include "NetStraightener.h"
 #include "PatchLayout.h"
 #include "Status.h"
 #include "TriangleMesh.h"
 
 #include <vtkSmartPointer.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
+class vtkDataArray;
 class vtkDataObject;
 class vtkIntArray;
 class vtkPolyData;
@@ -98,5 +101,15 @@ std::string modelPrefix(vtkDataObject* data);
 /// \brief Copies the `SourceFile` field array of `from` (if any) to `to`,
 ///        for filters that build their output anew rather than copying the input.
 void copySourceFile(vtkDataObject* from, vtkDataObject* to);
+
+/// \brief Interpolates per-corner texture coordinates (`CornerTCoords`) on a
+///        surface whose triangles are pieces of `input`'s: piece t lies in
+///        input triangle `homeOf(t)`, and its corner c is the input surface
+///        point `cornerPoint(t, c)`. Each corner gets the home triangle's
+///        corner values at those input vertices, with those weights; a
+///        piece with a corner outside its home triangle (or a point without
+///        vertices) keeps the values already in `corners`.
+void interpolateCornerTCoords(vtkDataArray* corners, vtkDataArray* inputCorners, const TriangleMesh& input,
+  int pieces, const std::function<int(int)>& homeOf, const std::function<SurfacePoint(int, int)>& cornerPoint);
 
 } // namespace cmp::bridge
