@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace cmp
 {
@@ -55,10 +56,19 @@ void boundaryCoordinates(const TracedNet& net, const BaseTopology& base, const T
   }
 }
 
+/// Reweightings of a crowded patch at most.
 constexpr int kMaximumStretchIterations = 30;
 /// A patch whose smallest triangle has less than this share of its
 /// parameter area, relative to its share of the surface area, is crowded.
 constexpr double kCrowded = 1e-4;
+/// Re-solves of one patch's map at most while lowering its stretch.
+constexpr int kMaximumStretchSolves = 30;
+/// A lowered stretch norm that gains less than this factor ends the
+/// relaxation of a patch.
+constexpr double kLeastStretchGain = 1.001;
+/// Per-triangle squared stretch counted at most (a crushed or flipped
+/// triangle), so one triangle cannot make every map look equally bad.
+constexpr double kSquaredStretchCap = 1e16;
 
 /// Surface area of every triangle of a patch, and their sum.
 struct PatchAreas
@@ -94,45 +104,132 @@ double smallestAreaRatio(const TriangleMesh& piece, const PatchAreas& areas, con
   return smallest;
 }
 
-/// Sander's L2 stretch of each vertex (area-weighted over its triangles)
-/// for the map from the base triangle, drawn equilateral with the patch's
-/// area, to the surface; crowded vertices get a large value, capped.
-Eigen::VectorXd vertexStretch(const TriangleMesh& piece, const PatchAreas& areas, const Eigen::MatrixXd& barycentric)
+/// Per triangle, the square of Sander's L2 stretch of the map from the
+/// base triangle (drawn equilateral with the patch's area) to the surface:
+/// 1 for an isometry, large where a protrusion crowds; capped, and the cap
+/// for a crushed or flipped triangle.
+Eigen::VectorXd squaredTriangleStretch(const TriangleMesh& piece, const PatchAreas& areas,
+  const Eigen::MatrixXd& barycentric)
 {
   const double side = std::sqrt(4.0 * areas.total / std::sqrt(3.0));
   const Eigen::Vector2d cornerB(side, 0.0), cornerC(0.5 * side, 0.5 * std::sqrt(3.0) * side);
   const auto plane = [&](int v) -> Eigen::Vector2d { return barycentric(v, 0) * cornerB + barycentric(v, 1) * cornerC; };
-  constexpr double kCap = 1e8;
-  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(piece.vertexCount()), sum = weighted;
+  Eigen::VectorXd result(piece.triangleCount());
   for (int t = 0; t < piece.triangleCount(); ++t)
   {
     const Triangle& tri = piece.triangles[t];
     const Eigen::Vector2d q1 = plane(tri[0]), q2 = plane(tri[1]), q3 = plane(tri[2]);
     const Vec3 &p1 = piece.points[tri[0]], &p2 = piece.points[tri[1]], &p3 = piece.points[tri[2]];
     const double twiceArea = (q2.x() - q1.x()) * (q3.y() - q1.y()) - (q3.x() - q1.x()) * (q2.y() - q1.y());
-    double stretch = kCap;
+    result[t] = kSquaredStretchCap;
     if (twiceArea > 0.0)
     {
       const Vec3 ss = (p1 * (q2.y() - q3.y()) + p2 * (q3.y() - q1.y()) + p3 * (q1.y() - q2.y())) / twiceArea;
       const Vec3 st = (p1 * (q3.x() - q2.x()) + p2 * (q1.x() - q3.x()) + p3 * (q2.x() - q1.x())) / twiceArea;
-      stretch = std::min(kCap, std::sqrt(0.5 * (ss.squaredNorm() + st.squaredNorm())));
-    }
-    const double area = areas.triangle[t];
-    for (int v : tri)
-    {
-      weighted[v] += area * stretch * stretch;
-      sum[v] += area;
+      result[t] = std::min(kSquaredStretchCap, 0.5 * (ss.squaredNorm() + st.squaredNorm()));
     }
   }
+  return result;
+}
+
+/// The L2 stretch of each vertex (area-weighted over its triangles), at
+/// least 1: crowded vertices get a large value.
+Eigen::VectorXd vertexStretch(const TriangleMesh& piece, const PatchAreas& areas, const Eigen::MatrixXd& barycentric)
+{
+  const Eigen::VectorXd squared = squaredTriangleStretch(piece, areas, barycentric);
+  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(piece.vertexCount()), sum = weighted;
+  for (int t = 0; t < piece.triangleCount(); ++t)
+    for (int v : piece.triangles[t])
+    {
+      weighted[v] += areas.triangle[t] * squared[t];
+      sum[v] += areas.triangle[t];
+    }
   Eigen::VectorXd result(piece.vertexCount());
   for (int v = 0; v < piece.vertexCount(); ++v)
     result[v] = sum[v] > 0.0 ? std::max(1.0, std::sqrt(weighted[v] / sum[v])) : 1.0;
   return result;
 }
 
+/// Sander's L2 stretch norm of a patch's map (1 for an isometry).
+double stretchNorm(const TriangleMesh& piece, const PatchAreas& areas, const Eigen::MatrixXd& barycentric)
+{
+  const Eigen::VectorXd squared = squaredTriangleStretch(piece, areas, barycentric);
+  double sum = 0.0;
+  for (int t = 0; t < piece.triangleCount(); ++t)
+    sum += areas.triangle[t] * squared[t];
+  return std::sqrt(sum / areas.total);
+}
+
+/// Spreads a crowded patch: lowers the weights towards stretched vertices
+/// (Yoshizawa, Belyaev, Seidel 2004) and keeps the least crowded map;
+/// returns the weights that give it. Weights spanning many orders of
+/// magnitude make late iterations unstable, hence the cap, the patience and
+/// keeping the best map.
+Eigen::SparseMatrix<double> spreadCrowded(const TriangleMesh& piece, const PatchAreas& areas,
+  Eigen::SparseMatrix<double> weights, const std::vector<int>& fixedRow, const Eigen::MatrixXd& fixedValues,
+  Eigen::MatrixXd& values)
+{
+  Eigen::SparseMatrix<double> kept = weights;
+  double crowding = smallestAreaRatio(piece, areas, values);
+  Eigen::MatrixXd relaxed = values;
+  for (int iteration = 0, idle = 0; iteration < kMaximumStretchIterations && crowding < kCrowded && idle < 4;
+       ++iteration, ++idle)
+  {
+    weights = weights * vertexStretch(piece, areas, relaxed).cwiseInverse().asDiagonal();
+    if (!solveConvexCombinationSystem(weights, fixedRow, fixedValues, relaxed).ok())
+      break;
+    const double relaxedCrowding = smallestAreaRatio(piece, areas, relaxed);
+    if (relaxedCrowding > crowding)
+    {
+      crowding = relaxedCrowding;
+      values = relaxed;
+      kept = weights;
+      idle = -1;
+    }
+  }
+  return kept;
+}
+
+/// Lowers the stretch of any patch's map (`lowerStretch`), continuing from
+/// `spreadCrowded()` with its reweighting:
+/// the weights towards every vertex are divided by its stretch raised to a
+/// step exponent, and the map is solved again. The undamped iteration
+/// overshoots after a few steps, so a step is kept only if it lowers the
+/// stretch norm and flips nothing; a rejected step halves the exponent, a
+/// kept one raises it again. Positive weights keep every map bijective.
+void lowerStretch(const TriangleMesh& piece, const PatchAreas& areas, Eigen::SparseMatrix<double> weights,
+  const std::vector<int>& fixedRow, const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
+{
+  double best = stretchNorm(piece, areas, values);
+  double exponent = 1.0;
+  Eigen::VectorXd stretch = vertexStretch(piece, areas, values);
+  Eigen::MatrixXd relaxed;
+  for (int solve = 0; solve < kMaximumStretchSolves && exponent > 1.0 / 64; ++solve)
+  {
+    Eigen::SparseMatrix<double> trial = weights * stretch.array().pow(-exponent).matrix().asDiagonal();
+    if (!solveConvexCombinationSystem(trial, fixedRow, fixedValues, relaxed).ok())
+      return;
+    const double norm = stretchNorm(piece, areas, relaxed);
+    if (!(norm < best) || !(smallestAreaRatio(piece, areas, relaxed) > 0.0))
+    {
+      exponent *= 0.5;
+      continue;
+    }
+    const double gain = best / norm;
+    best = norm;
+    values.swap(relaxed);
+    weights.swap(trial);
+    if (gain < kLeastStretchGain)
+      return;
+    stretch = vertexStretch(piece, areas, values);
+    exponent = std::min(1.0, 1.5 * exponent);
+  }
+}
+
 } // namespace
 
-Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& out)
+Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& out,
+  const PatchParameterizationOptions& options)
 {
   const EditableMesh& mesh = net.mesh;
   const int patchCount = domain.mesh.triangleCount();
@@ -167,27 +264,12 @@ Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, Patch
     if (Status s = solveConvexCombinationSystem(weights, fixedRow, fixedValues, values); !s.ok())
       return Status::error("patch " + std::to_string(patch) + ": " + s.message());
     // Landmark-free protrusions (tails, ears) crowd exponentially in a mean
-    // value map, down to zero area in double precision. Lowering the weights
-    // towards stretched vertices (Yoshizawa et al. 2004) spreads them out;
-    // keep the least crowded map.
-    // Weights spanning many orders of magnitude make late iterations
-    // unstable, hence the cap, the patience and keeping the best map.
-    double crowding = smallestAreaRatio(piece, areas, values);
-    Eigen::MatrixXd relaxed = values;
-    for (int iteration = 0, idle = 0; iteration < kMaximumStretchIterations && crowding < kCrowded && idle < 4;
-         ++iteration, ++idle)
-    {
-      weights = weights * vertexStretch(piece, areas, relaxed).cwiseInverse().asDiagonal();
-      if (!solveConvexCombinationSystem(weights, fixedRow, fixedValues, relaxed).ok())
-        break;
-      const double relaxedCrowding = smallestAreaRatio(piece, areas, relaxed);
-      if (relaxedCrowding > crowding)
-      {
-        crowding = relaxedCrowding;
-        values = relaxed;
-        idle = -1;
-      }
-    }
+    // value map, down to zero area in double precision, and uniform remesh
+    // samples then miss them.
+    weights = spreadCrowded(piece, areas, std::move(weights), fixedRow, fixedValues, values);
+    if (options.lowerStretch)
+      lowerStretch(piece, areas, std::move(weights), fixedRow, fixedValues, values);
+    const double crowding = smallestAreaRatio(piece, areas, values);
     out.smallestAreaRatio = std::min(out.smallestAreaRatio, crowding);
 
     for (const Triangle& tri : piece.triangles)

@@ -36,14 +36,29 @@ struct PatchParameterization
   double smallestAreaRatio = 0.0;
 };
 
+/// \brief Tuning of `parameterizePatches()`.
+struct PatchParameterizationOptions
+{
+  /// \brief Lower the stretch of every patch's map, not only spread crowded
+  ///        ones: landmark-free protrusions (ears, horns, tails) get more of
+  ///        the base domain, so uniform remesh samples reach further into
+  ///        them, at the price of more folded remesh triangles elsewhere
+  ///        (measured in Documentation/known-issues.md).
+  bool lowerStretch = false;
+};
+
 /// \brief Maps each patch onto its base triangle: the three curves onto the
 ///        triangle's edges by arc length (the same on both sides of a curve,
 ///        so shared vertices agree), the interior by Floater's mean value
 ///        weights. One sparse solve per patch; a crowded patch (a long
 ///        protrusion without a landmark) is re-solved with weights lowered
 ///        towards stretched vertices (Yoshizawa, Belyaev, Seidel 2004) while
-///        that makes its most crowded triangle larger.
-Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& out);
+///        that makes its most crowded triangle larger. With
+///        `options.lowerStretch`, every patch is then re-solved while that
+///        lowers Sander's L2 stretch norm (damped steps, each kept only if it
+///        lowers the norm and flips nothing).
+Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& out,
+  const PatchParameterizationOptions& options = {});
 
 /// \brief Re-expresses barycentric coordinates given in base triangle
 ///        `from` in base triangle `to`. Possible only for a point on the
