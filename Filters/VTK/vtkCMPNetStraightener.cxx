@@ -206,7 +206,11 @@ int vtkCMPNetStraightener::RequestData(
   }
   cmp::PatchParameterization parameterization;
   if (status.ok())
-    status = cmp::parameterizePatches(straight.net, domain, parameterization);
+  {
+    cmp::PatchParameterizationOptions options;
+    options.lowerStretch = this->LowerStretch;
+    status = cmp::parameterizePatches(straight.net, domain, parameterization, options);
+  }
   if (!status.ok())
   {
     vtkErrorMacro(<< model << status.message());
@@ -239,6 +243,7 @@ int vtkCMPNetStraightener::RequestData(
     cmp::bridge::setFieldValue(field, "Sweeps", report.sweeps);
     cmp::bridge::setFieldValue(field, "SkippedStars", report.skippedStars);
     cmp::bridge::setFieldValue(field, "FlippedTriangles", parameterization.flippedTriangles);
+    cmp::bridge::setFieldValue(field, "SmallestAreaRatio", parameterization.smallestAreaRatio);
     cmp::bridge::setFieldValue(field, "NetValid", problem.empty() ? 1 : 0);
     // The outputs are built anew: keep the model's name for the remesher.
     cmp::bridge::copySourceFile(input, output);
@@ -253,4 +258,5 @@ void vtkCMPNetStraightener::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumSweeps: " << this->MaximumSweeps << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
+  os << indent << "LowerStretch: " << this->LowerStretch << "\n";
 }

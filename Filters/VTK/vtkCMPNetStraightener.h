@@ -27,8 +27,12 @@
 /// `BaseCoordinates` (its barycentric coordinates there, in the order of
 /// that `L0` cell's points). Field arrays: `NetLengthBefore`,
 /// `NetLengthAfter`, `NetLengthPerSqrtAreaAfter`, `AreaVariationBefore`,
-/// `AreaVariationAfter`, `Sweeps`, `SkippedStars`, `FlippedTriangles` and
-/// `NetValid` (1 when the independent layout check passes on the result).
+/// `AreaVariationAfter`, `Sweeps`, `SkippedStars`, `FlippedTriangles`,
+/// `SmallestAreaRatio` (over all triangles, the share of its base
+/// triangle's area a triangle's image takes divided by its share of its
+/// patch's surface area: 1 for an area-preserving map, tiny where a part
+/// without landmarks is crushed) and `NetValid` (1 when the independent
+/// layout check passes on the result).
 /// Output 1: the net as polylines, one per `L0` edge, with cell arrays
 /// `BaseEdgeId`, `FeatureIdA` and `FeatureIdB`, and the same field arrays.
 class CMPFILTERS_EXPORT vtkCMPNetStraightener : public vtkPolyDataAlgorithm
@@ -63,6 +67,18 @@ public:
   /// \brief Fraction of an edge's length within which curves snap to vertices.
   vtkGetMacro(SnapTolerance, double);
 
+  /// \brief Lower the stretch of every patch's map (default off): parts of
+  ///        the surface that carry no landmark (ears, horns, tails) get more
+  ///        of the base domain, so a uniform remesh reaches further into
+  ///        them, at the price of more remesh triangles folded elsewhere.
+  ///        Off, only patches where such a part is crushed to almost no area
+  ///        are spread.
+  vtkSetMacro(LowerStretch, bool);
+  /// \brief Lower the stretch of every patch's map.
+  vtkGetMacro(LowerStretch, bool);
+  /// \brief Lower the stretch of every patch's map.
+  vtkBooleanMacro(LowerStretch, bool);
+
 protected:
   vtkCMPNetStraightener();
   ~vtkCMPNetStraightener() override = default;
@@ -76,4 +92,5 @@ private:
   int MaximumSweeps = 5;
   double Tolerance = 0.002;
   double SnapTolerance = 0.1;
+  bool LowerStretch = false;
 };

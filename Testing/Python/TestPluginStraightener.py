@@ -69,8 +69,8 @@ def main():
     group = simple.GroupDatasets(Input=[with_x(m) for m in models])
     tracer = names["FeatureNetTracer"](Input=group, BaseDomain=base)
     straightener = names["NetStraightener"](Input=tracer, BaseDomain=base)
-    check_equal((straightener.MaximumSweeps, straightener.Tolerance, straightener.SnapTolerance), (5, 0.002, 0.1),
-                "defaults")
+    check_equal((straightener.MaximumSweeps, straightener.Tolerance, straightener.SnapTolerance,
+                 straightener.LowerStretch), (5, 0.002, 0.1, 0), "defaults")
     straightener.UpdatePipeline()
 
     traced = servermanager.Fetch(tracer, idx=0)
@@ -93,6 +93,24 @@ def main():
           "MaximumSweeps 0 changed the net length")
     check_equal(field(unswept, "NetValid"), 1, "MaximumSweeps 0: NetValid")
     straightener.MaximumSweeps = 5
+
+    # LowerStretch: the same cut surfaces, every patch map less crowded.
+    crowding = [field(surfaces.GetBlock(b), "SmallestAreaRatio") for b in range(len(models))]
+    straightener.LowerStretch = 1
+    straightener.UpdatePipeline()
+    lowered = servermanager.Fetch(straightener, idx=0)
+    lowered_curves = servermanager.Fetch(straightener, idx=1)
+    for block, model in enumerate(models):
+        surface = lowered.GetBlock(block)
+        check_block(surface, lowered_curves.GetBlock(block), traced.GetBlock(block).GetNumberOfPoints(),
+                    "LowerStretch: block %d (%s)" % (block, model))
+        check_equal(surface.GetNumberOfPoints(), surfaces.GetBlock(block).GetNumberOfPoints(),
+                    "LowerStretch: points of %s" % model)
+        spread = field(surface, "SmallestAreaRatio")
+        check(spread > crowding[block], "LowerStretch: smallest area ratio of %s %g, without %g"
+              % (model, spread, crowding[block]))
+        print("LowerStretch: %s smallest area ratio %g -> %g" % (model, crowding[block], spread))
+    straightener.LowerStretch = 0
 
     # Bad input: reported by the filter, no output.
     def expect_failure(proxy, fragment, what):
