@@ -232,11 +232,15 @@ def trace_net(model, domain, output_folder):
     return surface
 
 
-def straighten_net(model, domain, traced, output_folder):
+def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
     """NetStraightener on the tracer's surface: writes NAME.param.vtp (the
     re-triangulated surface with PatchId, BaseTriangle and BaseCoordinates)
-    and NAME.straight-curves.vtp (the straightened curves)."""
-    surface, value = _run_net_filter(model, "straighten", cmp.vtkCMPNetStraightener(), traced, domain,
+    and NAME.straight-curves.vtp (the straightened curves). With
+    lower_stretch, every patch's map is made less stretched (the filter's
+    LowerStretch)."""
+    straightener = cmp.vtkCMPNetStraightener()
+    straightener.SetLowerStretch(lower_stretch)
+    surface, value = _run_net_filter(model, "straighten", straightener, traced, domain,
                                      output_folder, ".param.vtp", ".straight-curves.vtp")
     model.report["straighten"] = {
         "net_length_before": round(value("NetLengthBefore"), 6),
@@ -249,6 +253,7 @@ def straighten_net(model, domain, traced, output_folder):
         # Not a failure: the parameterization is still written, and the
         # count says where it is not bijective.
         "flipped_triangles": int(value("FlippedTriangles")),
+        "smallest_area_ratio": _significant(value("SmallestAreaRatio"), 4),
         "net_valid": bool(value("NetValid")),
         "vertices": surface.GetNumberOfPoints(),
     }
@@ -836,6 +841,10 @@ def parse_arguments(argv):
                         help="refine adaptively, J being the maximum level: split a triangle while on any model the "
                         "surface is farther than T times that model's bounding-box diagonal from it (e.g. 0.002; "
                         "default 0: uniform)")
+    parser.add_argument("--lower-stretch", action="store_true",
+                        help="lower the stretch of every patch's map (Net Straightener's LowerStretch): parts "
+                        "without landmarks, such as ears and tails, get more remesh vertices, at the price of more "
+                        "folded remesh triangles elsewhere")
     parser.add_argument("--transfer-from", metavar="NAME",
                         help="carry model NAME's point arrays and texture coordinates onto every other remesh "
                         "(TARGET.from-NAME.vtp; TARGET.from-NAME.png with NAME's texture image)")
@@ -1063,7 +1072,7 @@ def main(argv=None):
             traced = trace_net(model, domain, args.output)
             print("%s straightening the net (traced in %.2f s)" % (step, model.report["seconds"]["trace"]),
                   flush=True)
-            straighten_net(model, domain, traced, args.output)
+            straighten_net(model, domain, traced, args.output, args.lower_stretch)
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
         except StageError as error:
             model.fail(error)
@@ -1151,9 +1160,10 @@ def print_summary(models, report):
         print("remesh: FAILED: %s" % remesh["error"])
     elif "vertices" in remesh:
         adaptive = " (adaptive, tolerance %g)" % remesh["adaptive_tolerance"] if remesh["adaptive_tolerance"] else ""
-        print("remesh: level %d%s, %d vertices, %d triangles per model (%d models, %.3f s)"
-              % (remesh["level"], adaptive, remesh["vertices"], remesh["triangles"], len(remesh["models"]),
-                 remesh["seconds"]))
+        count = len(remesh["models"])
+        print("remesh: level %d%s, %d vertices, %d triangles per model (%d model%s, %.3f s)"
+              % (remesh["level"], adaptive, remesh["vertices"], remesh["triangles"], count,
+                 "" if count == 1 else "s", remesh["seconds"]))
     width = max(len(m.name) for m in models)
     print("%-*s  %8s  %8s  %11s  %12s  %16s  %s"
           % (width, "model", "vertices", "seconds", "net/sqrt(A)", "straightened", "Hausdorff/diag %", "result"))
