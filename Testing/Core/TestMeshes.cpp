@@ -1,5 +1,7 @@
 #include "TestMeshes.h"
 
+#include "BaseDomainBuilder.h"
+
 #include "NetStraightener.h"
 #include "NetTracer.h"
 #include "Subdivision.h"
@@ -156,6 +158,15 @@ LandmarkedModel landmarkedRealModel(const std::string& name)
   if (const Status status = loadRealModel(name, model); !status.ok())
     ADD_FAILURE() << name << ": " << status.message();
   return model;
+}
+
+BaseDomain realBaseDomain(const std::string& name)
+{
+  const LandmarkedModel model = landmarkedRealModel(name);
+  BaseDomain domain;
+  if (const Status status = buildBaseDomain(model.data.mesh, model.landmarks, domain); !status.ok())
+    ADD_FAILURE() << "L0 from " << name << ": " << status.message();
+  return domain;
 }
 
 Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out)

@@ -70,6 +70,10 @@ std::vector<LandmarkedModel> landmarkedRealModels();
 /// \brief The landmarked real model called `name`; a test failure if absent.
 LandmarkedModel landmarkedRealModel(const std::string& name);
 
+/// \brief The base domain `L0` built from the landmarks of real model
+///        `name` ("381" for most tests); a test failure if it cannot be.
+BaseDomain realBaseDomain(const std::string& name);
+
 /// \brief A model's feature net straightened on a base domain, with its
 ///        per-patch parameterization: what remeshing needs.
 struct ParameterizedModel

@@ -125,9 +125,8 @@ TEST(NetTracer, CoarseToFineParameterizationGivesAValidNetAsShort)
 {
   CMP_REQUIRE_SHARED_DATA();
   const SubdividedModel model = subdivided387();
-  const test::LandmarkedModel source = test::landmarkedRealModel("381");
-  BaseDomain domain;
-  ASSERT_TRUE(buildBaseDomain(source.data.mesh, source.landmarks, domain).ok());
+  const BaseDomain domain = test::realBaseDomain("381");
+  ASSERT_GT(domain.mesh.vertexCount(), 0);
   double lengths[2] = { 0.0, 0.0 };
   for (const bool multilevel : { false, true })
   {
