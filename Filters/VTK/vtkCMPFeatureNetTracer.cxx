@@ -15,6 +15,8 @@
 #include <vtkPolyData.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkCMPFeatureNetTracer);
 
@@ -41,34 +43,42 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType size)
   return array;
 }
 
-/// Where vertex `v` of the traced mesh lies on the input surface: input
-/// vertices are themselves, split vertices the blend of their edge's ends.
+/// The point `(1 - t) a + t b` as a blend of the input vertices of a and b.
 /// A point needing more than three input vertices (never, since splits stay
 /// inside input triangles) comes back without vertices.
-cmp::SurfacePoint inputPointOf(const cmp::EditableMesh& mesh, int v, int inputPoints)
+cmp::SurfacePoint blend(const cmp::SurfacePoint& a, const cmp::SurfacePoint& b, double t)
 {
-  if (v < inputPoints)
-    return cmp::SurfacePoint::at(v);
-  const cmp::VertexOrigin& origin = mesh.origin(v);
-  const cmp::SurfacePoint a = inputPointOf(mesh, origin.a, inputPoints);
-  const cmp::SurfacePoint b = inputPointOf(mesh, origin.b, inputPoints);
-  cmp::SurfacePoint blend;
+  cmp::SurfacePoint result;
   int used = 0;
-  for (const auto& [end, share] : { std::make_pair(&a, 1.0 - origin.t), std::make_pair(&b, origin.t) })
+  for (const auto& [end, share] : { std::make_pair(&a, 1.0 - t), std::make_pair(&b, t) })
     for (int k = 0; k < 3; ++k)
     {
       if (end->vertex[k] < 0)
         continue;
       int slot = 0;
-      while (slot < used && blend.vertex[slot] != end->vertex[k])
+      while (slot < used && result.vertex[slot] != end->vertex[k])
         ++slot;
       if (slot == 3)
         return {};
       if (slot == used)
-        blend.vertex[used++] = end->vertex[k];
-      blend.weight[slot] += share * end->weight[k];
+        result.vertex[used++] = end->vertex[k];
+      result.weight[slot] += share * end->weight[k];
     }
-  return blend;
+  return result;
+}
+
+/// Where every vertex of the traced mesh lies on the input surface: input
+/// vertices are themselves, a split vertex the blend of its edge's ends,
+/// which come before it (one forward pass, as for the point data).
+std::vector<cmp::SurfacePoint> inputPointsOf(const cmp::EditableMesh& mesh, int inputPoints)
+{
+  std::vector<cmp::SurfacePoint> points(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const cmp::VertexOrigin& origin = mesh.origin(v);
+    points[v] = v < inputPoints ? cmp::SurfacePoint::at(v) : blend(points[origin.a], points[origin.b], origin.t);
+  }
+  return points;
 }
 
 /// The refined surface with the input's arrays carried through and PatchId.
@@ -99,9 +109,11 @@ vtkSmartPointer<vtkPolyData> refinedSurface(
   vtkDataArray* corners = cells->GetArray(cmp::bridge::kCornerTCoordsArray);
   vtkDataArray* inputCorners = input->GetCellData()->GetArray(cmp::bridge::kCornerTCoordsArray);
   if (corners && inputCorners && corners->GetNumberOfComponents() == 6)
+  {
+    const std::vector<cmp::SurfacePoint> onInput = inputPointsOf(mesh, static_cast<int>(inputPoints));
     cmp::bridge::interpolateCornerTCoords(corners, inputCorners, inputMesh, mesh.triangleCount(),
-      [&](int t) { return mesh.inputTriangle(t); },
-      [&](int t, int c) { return inputPointOf(mesh, mesh.triangle(t)[c], static_cast<int>(inputPoints)); });
+      [&](int t) { return mesh.inputTriangle(t); }, [&](int t, int c) { return onInput[mesh.triangle(t)[c]]; });
+  }
   auto patchIds = intArray("PatchId", mesh.triangleCount());
   for (int t = 0; t < mesh.triangleCount(); ++t)
     patchIds->SetValue(t, net.patchOfTriangle[t]);
