@@ -169,8 +169,10 @@ Eigen::SparseMatrix<double> spreadCrowded(const TriangleMesh& piece, const Patch
   Eigen::SparseMatrix<double> weights, const std::vector<int>& fixedRow, const Eigen::MatrixXd& fixedValues,
   Eigen::MatrixXd& values)
 {
-  Eigen::SparseMatrix<double> kept = weights;
   double crowding = smallestAreaRatio(piece, areas, values);
+  if (!(crowding < kCrowded))
+    return weights;
+  Eigen::SparseMatrix<double> kept = weights;
   Eigen::MatrixXd relaxed = values;
   for (int iteration = 0, idle = 0; iteration < kMaximumStretchIterations && crowding < kCrowded && idle < 4;
        ++iteration, ++idle)
