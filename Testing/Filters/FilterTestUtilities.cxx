@@ -7,15 +7,15 @@
 #include "vtkCMPSurfaceReader.h"
 
 #include <vtkAlgorithm.h>
-#include <vtkIdList.h>
-#include <vtkDoubleArray.h>
-#include <vtkCellData.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkIntArray.h>
 #include <vtkMassProperties.h>

@@ -14,10 +14,9 @@
 
 #include <gtest/gtest.h>
 
-#include <iostream>
-
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <vector>
 

@@ -287,11 +287,12 @@ TEST(NetStraightenerFilter, LowerStretchSpreadsTheEarsOf381)
   ASSERT_EQ(after->GetNumberOfPoints(), before->GetNumberOfPoints());
   vtkDataArray* coordinatesBefore = before->GetPointData()->GetArray("BaseCoordinates");
   vtkDataArray* coordinatesAfter = after->GetPointData()->GetArray("BaseCoordinates");
-  vtkDataArray* baseTriangle = after->GetPointData()->GetArray("BaseTriangle");
+  vtkDataArray* baseTriangleBefore = before->GetPointData()->GetArray("BaseTriangle");
+  vtkDataArray* baseTriangleAfter = after->GetPointData()->GetArray("BaseTriangle");
   double largestMove = 0.0;
   for (vtkIdType v = 0; v < after->GetNumberOfPoints(); ++v)
   {
-    ASSERT_EQ(baseTriangle->GetComponent(v, 0), before->GetPointData()->GetArray("BaseTriangle")->GetComponent(v, 0));
+    ASSERT_EQ(baseTriangleAfter->GetComponent(v, 0), baseTriangleBefore->GetComponent(v, 0));
     for (int k = 0; k < 3; ++k)
       largestMove = std::max(largestMove,
         std::abs(coordinatesAfter->GetComponent(v, k) - coordinatesBefore->GetComponent(v, k)));
