@@ -1,0 +1,58 @@
+#pragma once
+/// \file FoldRepair.h
+/// \brief Unfolds remesh triangles that point against their surface by
+///        sliding a few vertices a short way along that surface.
+
+#include "EditableMesh.h"
+#include "SemiRegularRemesher.h"
+#include "Status.h"
+
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief How far `repairFolds()` may go.
+struct FoldRepairOptions
+{
+  /// \brief Sweeps over the vertices of folded triangles at most.
+  int maximumSweeps = 20;
+  /// \brief A vertex stays within this fraction of its shortest remesh
+  ///        edge (as placed) from where its parameterization put it, so the
+  ///        correspondence moves less than the remesh's own resolution.
+  double reach = 2.0;
+};
+
+/// \brief What `repairFolds()` did.
+struct FoldRepairReport
+{
+  int foldedBefore = 0;  ///< Triangles against the surface before.
+  int foldedAfter = 0;   ///< Triangles against the surface after.
+  int movedVertices = 0; ///< Vertices that left their parameterized place.
+  double largestMove = 0.0; ///< Longest straight-line move of a vertex.
+};
+
+/// \brief Counts the remesh triangles whose normal points against the
+///        surface under them: the sum of the unit normals of the surface
+///        triangles holding their corners (landmark corners record none; a
+///        triangle of landmarks only, or a flat one, is not counted).
+int countFoldedTriangles(
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
+
+/// \brief Moves vertices of folded remesh triangles along `surface` until
+///        their triangles agree with it, or no move helps.
+///
+/// A thin remesh triangle on a curved surface can point against it even
+/// though the parameterization is bijective: its normal is decided by the
+/// short side, which curvature can tip over. Each sweep tries, for every
+/// vertex of a folded triangle, short moves in 16 directions of the tangent
+/// plane (walked across the surface's triangles, so the vertex stays on it)
+/// and keeps the one that leaves fewest folded triangles around the vertex,
+/// then the best worst shape quality (signed by the triangle's agreement
+/// with the surface). Vertices with most folds around them go first.
+/// Landmark samples never move.
+/// Every moved sample still names the surface triangle it lies in.
+Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
+  const FoldRepairOptions& options = {}, FoldRepairReport* report = nullptr);
+
+} // namespace cmp
