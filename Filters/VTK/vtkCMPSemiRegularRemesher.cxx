@@ -1,6 +1,7 @@
 #include "vtkCMPSemiRegularRemesher.h"
 
 #include "BaseDomainBuilder.h" // triangleShapeQuality
+#include "FoldRepair.h"
 #include "PatchLayout.h"
 #include "SemiRegularRemesher.h"
 #include "SurfaceDistance.h"
@@ -178,14 +179,6 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<
   points->AddArray(shared.vertexLevels);
 }
 
-/// Unit normal of triangle (a, b, c); zero for a degenerate one.
-cmp::Vec3 unitNormal(const cmp::Vec3& a, const cmp::Vec3& b, const cmp::Vec3& c)
-{
-  const cmp::Vec3 n = (b - a).cross(c - a);
-  const double length = n.norm();
-  return length > 0.0 ? cmp::Vec3(n / length) : cmp::Vec3::Zero();
-}
-
 /// Shape of the remesh and its orientation against the input surface.
 struct RemeshQuality
 {
@@ -209,17 +202,8 @@ RemeshQuality measureQuality(const cmp::SemiRegularMesh& remesh, const std::vect
       minimumAngle = std::min(minimumAngle, std::atan2(e1.cross(e2).norm(), e1.dot(e2)));
     }
     qualitySum += cmp::triangleShapeQuality(a, b, c);
-    // The input's normal under the triangle: the sum of the unit normals of
-    // the input triangles its vertices lie in (landmarks record none).
-    cmp::Vec3 under = cmp::Vec3::Zero();
-    for (int v : tri)
-    {
-      const cmp::SurfaceSample& s = samples[v];
-      if (s.vertex[1] >= 0)
-        under += unitNormal(surface.point(s.vertex[0]), surface.point(s.vertex[1]), surface.point(s.vertex[2]));
-    }
-    quality.flippedTriangles += (b - a).cross(c - a).dot(under) < 0.0;
   }
+  quality.flippedTriangles = cmp::countFoldedTriangles(remesh, surface, samples);
   quality.minimumAngleDegrees = minimumAngle * 180.0 / M_PI;
   quality.meanShapeQuality = qualitySum / std::max<std::size_t>(1, remesh.triangles.size());
   return quality;
@@ -250,7 +234,7 @@ public:
     return status;
   }
 
-  cmp::Status place(const SharedRemesh& shared, bool computeDistance, vtkPolyData* output,
+  cmp::Status place(const SharedRemesh& shared, bool computeDistance, bool repairFolds, vtkPolyData* output,
     const std::function<void(double)>& progress)
   {
     const Clock::time_point placementStart = Clock::now();
@@ -259,6 +243,13 @@ public:
       return cmp::Status::error("cannot place the remesh on the input (BaseTriangle and BaseCoordinates do not "
                                 "fit its PatchId): " +
         placed.message());
+    cmp::FoldRepairReport repair;
+    if (repairFolds)
+    {
+      if (cmp::Status repaired = cmp::repairFolds(shared.mesh, input_.net().mesh, samples, {}, &repair);
+          !repaired.ok())
+        return repaired;
+    }
     const std::vector<cmp::Vec3> positions = cmp::samplePositions(input_.net(), samples);
     const double placementSeconds = secondsSince(placementStart);
     progress(0.5);
@@ -285,6 +276,9 @@ public:
     cmp::bridge::setFieldValue(field, "VertexCount", shared.mesh.vertexCount());
     cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(shared.mesh.triangles.size()));
     cmp::bridge::setFieldValue(field, "FlippedTriangles", quality.flippedTriangles);
+    cmp::bridge::setFieldValue(
+      field, "FoldedBeforeRepair", repairFolds ? repair.foldedBefore : quality.flippedTriangles);
+    cmp::bridge::setFieldValue(field, "RepairedVertices", repair.movedVertices);
     cmp::bridge::setFieldValue(field, "MinimumAngle", quality.minimumAngleDegrees);
     cmp::bridge::setFieldValue(field, "MeanShapeQuality", quality.meanShapeQuality);
     cmp::bridge::setFieldValue(field, "RebuildSeconds", rebuildSeconds_);
@@ -397,7 +391,7 @@ int vtkCMPSemiRegularRemesher::RequestData(
   {
     results.push_back(vtkSmartPointer<vtkPolyData>::New());
     const auto progress = [this, m, modelCount](double f) { this->UpdateProgress(0.4 + 0.6 * (m + f) / modelCount); };
-    if (cmp::Status placed = models[m]->place(shared, this->ComputeDistance, results.back(), progress); !placed.ok())
+    if (cmp::Status placed = models[m]->place(shared, this->ComputeDistance, this->RepairFolds, results.back(), progress); !placed.ok())
       return fail(names[m] + placed.message());
   }
   cmp::bridge::assembleOutput(input, output, results);
@@ -412,4 +406,5 @@ void vtkCMPSemiRegularRemesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Level: " << this->Level << "\n";
   os << indent << "AdaptiveTolerance: " << this->AdaptiveTolerance << "\n";
   os << indent << "ComputeDistance: " << this->ComputeDistance << "\n";
+  os << indent << "RepairFolds: " << this->RepairFolds << "\n";
 }

@@ -12,7 +12,8 @@ class vtkPolyData;
 
 /// \brief Remeshes every model of a collection with the same connectivity:
 ///        `L0` refined `Level` times by 1-to-4 quadrisection. Vertex k of
-///        every remesh is the same base-domain location on every model.
+///        every remesh is the same base-domain location on every model
+///        (up to the short moves of `RepairFolds`).
 ///
 /// Input 0: the Surface output of vtkCMPNetStraightener (point arrays
 /// `FeatureId`, `BaseTriangle`, `BaseCoordinates`, cell array `PatchId`),
@@ -30,7 +31,8 @@ class vtkPolyData;
 /// `FeatureId` (f at vertex f, -1 elsewhere), `BaseTriangle` and
 /// `BaseCoordinates` of every remesh vertex. Cell arrays: `PatchId` (the
 /// `L0` triangle of each triangle) and `Level`. Field arrays: `RemeshLevel`,
-/// `VertexCount`, `TriangleCount`, `FlippedTriangles`, `MinimumAngle`,
+/// `VertexCount`, `TriangleCount`, `FlippedTriangles` (after repair),
+/// `FoldedBeforeRepair`, `RepairedVertices`, `MinimumAngle`,
 /// `MeanShapeQuality`, timings (`RebuildSeconds`, `PlacementSeconds`,
 /// `TotalSeconds`) and, with ComputeDistance, the distances to the input
 /// (`HausdorffDistance`, `HausdorffDistanceRelative`, `MeanDistance`,
@@ -81,6 +83,20 @@ public:
   /// \brief Measure how far each remesh is from its input.
   vtkBooleanMacro(ComputeDistance, bool);
 
+  /// \brief Unfold remesh triangles that face against their surface
+  ///        (default on). A thin triangle on a curved part can tip over
+  ///        even though the parameterization is bijective; the vertices of
+  ///        such triangles are slid along the surface, each by less than
+  ///        twice its shortest edge, until their triangles agree with the
+  ///        surface or no short move helps. Landmarks never move. A moved
+  ///        vertex is no longer exactly at its `BaseCoordinates` on that
+  ///        model; turn off to keep every vertex exactly there.
+  vtkSetMacro(RepairFolds, bool);
+  /// \brief Unfold remesh triangles that face against their surface.
+  vtkGetMacro(RepairFolds, bool);
+  /// \brief Unfold remesh triangles that face against their surface.
+  vtkBooleanMacro(RepairFolds, bool);
+
 protected:
   vtkCMPSemiRegularRemesher();
   ~vtkCMPSemiRegularRemesher() override = default;
@@ -96,4 +112,5 @@ private:
   int Level = 4;
   double AdaptiveTolerance = 0.0;
   bool ComputeDistance = true;
+  bool RepairFolds = true;
 };

@@ -81,7 +81,7 @@ def main():
     tracer = names["FeatureNetTracer"](Input=group, BaseDomain=base)
     straightener = names["NetStraightener"](Input=tracer, BaseDomain=base)
     remesher = names["SemiRegularRemesher"](Input=straightener, BaseDomain=base)
-    check_equal((remesher.Level, remesher.ComputeDistance), (4, 1), "defaults")
+    check_equal((remesher.Level, remesher.ComputeDistance, remesher.RepairFolds), (4, 1, 1), "defaults")
     check_equal([remesher.SMProxy.GetOutputPortName(i) for i in range(2)], ["Remesh", "Connectivity"],
                 "output port names")
     remesher.Level = LEVEL
@@ -139,6 +139,28 @@ def main():
     check(quick.GetFieldData().GetArray("HausdorffDistance") is None, "ComputeDistance 0 still measures")
     check(numpy.array_equal(vtk_to_numpy(quick.GetPoints().GetData()), positions[0]), "ComputeDistance 0 moved points")
     remesher.ComputeDistance = 1
+
+    # Without fold repair: every vertex exactly where the parameterization
+    # puts it, FlippedTriangles back to FoldedBeforeRepair; with it, only
+    # the reported vertices had moved.
+    remesher.RepairFolds = 0
+    remesher.UpdatePipeline()
+    exact = servermanager.Fetch(remesher, idx=0)
+    for block in range(2):
+        remesh, repaired = exact.GetBlock(block), remeshes.GetBlock(block)
+        check_equal(field(remesh, "RepairedVertices"), 0, "block %d: RepairedVertices without repair" % block)
+        check_equal(field(remesh, "FlippedTriangles"), field(remesh, "FoldedBeforeRepair"),
+                    "block %d: folds without repair" % block)
+        check_equal(field(repaired, "FoldedBeforeRepair"), field(remesh, "FlippedTriangles"),
+                    "block %d: folds before repair" % block)
+        check(field(repaired, "FlippedTriangles") <= field(remesh, "FlippedTriangles"),
+              "block %d: the repair added folds" % block)
+        moved = numpy.any(vtk_to_numpy(remesh.GetPoints().GetData()) != positions[block], axis=1)
+        check_equal(int(moved.sum()), field(repaired, "RepairedVertices"), "block %d: moved vertices" % block)
+        print("block %d: %d folded triangles, %d after moving %d vertices"
+              % (block, field(remesh, "FlippedTriangles"), field(repaired, "FlippedTriangles"), moved.sum()))
+    check(any(field(remeshes.GetBlock(b), "RepairedVertices") > 0 for b in range(2)), "no vertex repaired")
+    remesher.RepairFolds = 1
 
     # Bad input: reported by the filter, no output.
     def expect_failure(proxy, fragment, what):
