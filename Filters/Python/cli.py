@@ -266,10 +266,11 @@ def _significant(value, digits=6):
     return float("%.*g" % (digits, value))
 
 
-def remesh_collection(models, domain, level, adaptive_tolerance, output_folder):
+def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, repair_folds=True):
     """SemiRegularRemesher on every straightened model at once (a multiblock
     with one block per model, named after it), so that they all get the same
-    connectivity, adaptive refinement included. Writes NAME.remesh.vtp per
+    connectivity, adaptive refinement included; repair_folds is the filter's
+    RepairFolds. Writes NAME.remesh.vtp per
     model, collection.vtm (all of them) and remesh_connectivity.vtp (the
     connectivity on L0); fills each model's "remesh" figures and returns the
     collection's (size, time). Raises StageError if the filter fails or a
@@ -284,6 +285,7 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder):
     remesher.SetLevel(level)
     remesher.SetAdaptiveTolerance(adaptive_tolerance)
     remesher.ComputeDistanceOn()
+    remesher.SetRepairFolds(repair_folds)
     start = time.perf_counter()
     remeshes = _run(remesher)
     seconds = time.perf_counter() - start
@@ -304,6 +306,8 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder):
             "mean_distance": _significant(value("MeanDistance")),
             # Reported, not a failure, as for the straightener.
             "flipped_triangles": int(value("FlippedTriangles")),
+            "folded_before_repair": int(value("FoldedBeforeRepair")),
+            "repaired_vertices": int(value("RepairedVertices")),
             "min_angle_degrees": round(value("MinimumAngle"), 4),
             "mean_shape_quality": round(value("MeanShapeQuality"), 4),
             "seconds": round(value("TotalSeconds"), 4),
@@ -845,6 +849,10 @@ def parse_arguments(argv):
                         help="lower the stretch of every patch's map (Net Straightener's LowerStretch): parts "
                         "without landmarks, such as ears and tails, get more remesh vertices, at the price of more "
                         "folded remesh triangles elsewhere")
+    parser.add_argument("--no-fold-repair", action="store_true",
+                        help="keep every remesh vertex exactly where its model's parameterization puts it (the "
+                        "Semi-Regular Remesher's RepairFolds off): by default the vertices of remesh triangles "
+                        "that face against the surface are slid a short way along it to unfold them")
     parser.add_argument("--transfer-from", metavar="NAME",
                         help="carry model NAME's point arrays and texture coordinates onto every other remesh "
                         "(TARGET.from-NAME.vtp; TARGET.from-NAME.png with NAME's texture image)")
@@ -1088,7 +1096,8 @@ def main(argv=None):
         print("remeshing %d model%s at level %d%s"
               % (len(ready), "" if len(ready) == 1 else "s", args.level, adaptive), flush=True)
         try:
-            remeshes, figures = remesh_collection(ready, domain, args.level, args.adaptive_tolerance, args.output)
+            remeshes, figures = remesh_collection(ready, domain, args.level, args.adaptive_tolerance, args.output,
+                                                   not args.no_fold_repair)
             report["remesh"].update(figures)
             for model in ready:
                 model.report["status"] = "ok"
