@@ -300,6 +300,16 @@ int countFoldedTriangles(
   return FoldedRemesh(remesh, surface, samples).foldedCount();
 }
 
+std::vector<char> foldedTriangles(
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+{
+  const FoldedRemesh mesh(remesh, surface, samples);
+  std::vector<char> folded(remesh.triangles.size(), 0);
+  for (std::size_t t = 0; t < folded.size(); ++t)
+    folded[t] = mesh.signedQuality(static_cast<int>(t)) < 0.0;
+  return folded;
+}
+
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
   const FoldRepairOptions& options, FoldRepairReport* report)
 {

@@ -39,6 +39,11 @@ struct FoldRepairReport
 int countFoldedTriangles(
   const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
 
+/// \brief 1 for each remesh triangle `countFoldedTriangles()` counts, 0
+///        for the others, in triangle order.
+std::vector<char> foldedTriangles(
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
+
 /// \brief Moves vertices of folded remesh triangles along `surface` until
 ///        their triangles agree with it, or no move helps.
 ///

@@ -26,6 +26,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <chrono>
@@ -182,6 +183,7 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<
 /// Shape of the remesh and its orientation against the input surface.
 struct RemeshQuality
 {
+  std::vector<char> folded; ///< Per triangle: faces against the surface.
   int flippedTriangles = 0;
   double minimumAngleDegrees = 0.0;
   double meanShapeQuality = 0.0;
@@ -203,7 +205,8 @@ RemeshQuality measureQuality(const cmp::SemiRegularMesh& remesh, const std::vect
     }
     qualitySum += cmp::triangleShapeQuality(a, b, c);
   }
-  quality.flippedTriangles = cmp::countFoldedTriangles(remesh, surface, samples);
+  quality.folded = cmp::foldedTriangles(remesh, surface, samples);
+  quality.flippedTriangles = static_cast<int>(std::count(quality.folded.begin(), quality.folded.end(), 1));
   quality.minimumAngleDegrees = minimumAngle * 180.0 / M_PI;
   quality.meanShapeQuality = qualitySum / std::max<std::size_t>(1, remesh.triangles.size());
   return quality;
@@ -266,6 +269,13 @@ public:
     remesh->GetCellData()->AddArray(shared.patchIds);
     remesh->GetCellData()->AddArray(shared.levels);
     const RemeshQuality quality = measureQuality(shared.mesh, positions, samples, input_.net().mesh);
+    // Per model, unlike PatchId and Level: lets a user threshold the folds.
+    auto folded = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    folded->SetName("Folded");
+    folded->SetNumberOfValues(static_cast<vtkIdType>(quality.folded.size()));
+    for (std::size_t t = 0; t < quality.folded.size(); ++t)
+      folded->SetValue(static_cast<vtkIdType>(t), quality.folded[t]);
+    remesh->GetCellData()->AddArray(folded);
     progress(0.7);
 
     vtkFieldData* field = remesh->GetFieldData();

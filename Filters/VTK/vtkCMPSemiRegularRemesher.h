@@ -30,7 +30,8 @@ class vtkPolyData;
 /// non-numeric arrays copied from the input point with the largest weight),
 /// `FeatureId` (f at vertex f, -1 elsewhere), `BaseTriangle` and
 /// `BaseCoordinates` of every remesh vertex. Cell arrays: `PatchId` (the
-/// `L0` triangle of each triangle) and `Level`. Field arrays: `RemeshLevel`,
+/// `L0` triangle of each triangle), `Level` and `Folded` (1 for a triangle
+/// facing against the surface, the ones `FlippedTriangles` counts). Field arrays: `RemeshLevel`,
 /// `VertexCount`, `TriangleCount`, `FlippedTriangles` (after repair),
 /// `FoldedBeforeRepair`, `RepairedVertices`, `MinimumAngle`,
 /// `MeanShapeQuality`, timings (`RebuildSeconds`, `PlacementSeconds`,

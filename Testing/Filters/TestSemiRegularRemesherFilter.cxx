@@ -240,6 +240,14 @@ void expectRemeshed(vtkPolyData* remesh, vtkPolyData* original, vtkPolyData* inp
   ASSERT_NE(points->GetArray("BaseTriangle"), nullptr) << what;
   ASSERT_NE(points->GetArray("BaseCoordinates"), nullptr) << what;
   EXPECT_EQ(remesh->GetCellData()->GetArray("PatchId")->GetRange()[1], l0->GetNumberOfCells() - 1) << what;
+  // Folded marks exactly the triangles FlippedTriangles counts.
+  vtkDataArray* folded = remesh->GetCellData()->GetArray("Folded");
+  ASSERT_NE(folded, nullptr) << what;
+  ASSERT_EQ(folded->GetNumberOfTuples(), triangleCount(l0, level)) << what;
+  double foldedSum = 0.0;
+  for (vtkIdType c = 0; c < folded->GetNumberOfTuples(); ++c)
+    foldedSum += folded->GetComponent(c, 0);
+  EXPECT_EQ(foldedSum, flipped) << what;
 
   // Landmark f of the original, by its FeatureId.
   std::vector<vtkIdType> landmarkOf(features, -1), inputLandmarkOf(features, -1);

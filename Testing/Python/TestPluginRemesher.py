@@ -59,8 +59,10 @@ def check_block(remesh, straightened, what):
     check(worst < 1e-9, what + ": X differs from x by %g" % worst)
     for name in ("BaseTriangle", "BaseCoordinates"):
         check(remesh.GetPointData().GetArray(name) is not None, what + ": no point array " + name)
-    for name in ("PatchId", "Level"):
+    for name in ("PatchId", "Level", "Folded"):
         check(remesh.GetCellData().GetArray(name) is not None, what + ": no cell array " + name)
+    check_equal(int(vtk_to_numpy(remesh.GetCellData().GetArray("Folded")).sum()), flipped,
+                what + ": Folded against FlippedTriangles")
     print("%s: %d vertices, %d flipped, minimum angle %.2f deg, Hausdorff %.4f of the diagonal, %.3f s"
           % (what, vertices, flipped, field(remesh, "MinimumAngle"), relative, field(remesh, "TotalSeconds")))
     return points
