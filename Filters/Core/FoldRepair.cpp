@@ -26,6 +26,13 @@ constexpr double kTypicalEdgeShare = 0.25;
 /// Shape quality below which a triangle counts as bad while repairing, so
 /// that unfolding never pays with a collapsed triangle.
 constexpr double kLeastQuality = 1e-3;
+/// Joint untangling of what single moves leave: rings of vertices around
+/// each remaining fold, gradient steps at most, halvings of a step at most,
+/// and the shape quality above which a triangle no longer pulls.
+constexpr int kUntangledRings = 3;
+constexpr int kUntangleIterations = 300;
+constexpr int kBacktrackingSteps = 12;
+constexpr double kFatEnough = 0.05;
 
 /// A point of the surface: a triangle and barycentric coordinates in the
 /// order of its vertices.
@@ -183,6 +190,28 @@ public:
   const Vec3& normal(int v) const { return normals_[v]; }
   const SurfacePoint& point(int v) const { return points_[v]; }
   const std::vector<int>& neighbours(int v) const { return neighbours_[v]; }
+  const std::vector<int>& trianglesOf(int v) const { return trianglesOf_[v]; }
+  int neighbourCount() const { return static_cast<int>(neighbours_.size()); }
+  const Triangle& triangle(int t) const { return remesh_.triangles[t]; }
+  int triangleCount() const { return static_cast<int>(remesh_.triangles.size()); }
+  /// Gradient of signedQuality(t) with respect to corner k's position
+  /// (the surface normals under the corners held fixed).
+  Vec3 qualityGradient(int t, int k) const
+  {
+    const Triangle& tri = remesh_.triangles[t];
+    const Vec3 &a = positions_[tri[k]], &b = positions_[tri[(k + 1) % 3]], &c = positions_[tri[(k + 2) % 3]];
+    const Vec3 under = normals_[tri[0]] + normals_[tri[1]] + normals_[tri[2]];
+    if (under.isZero())
+      return Vec3::Zero();
+    const Vec3 u = under.normalized();
+    const double squaredSides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    if (!(squaredSides > 0.0))
+      return Vec3::Zero();
+    const double n = (b - a).cross(c - a).dot(u);
+    const Vec3 dn = (b - c).cross(u);
+    const Vec3 dS = 2.0 * (2.0 * a - b - c);
+    return 2.0 * std::sqrt(3.0) * (dn * squaredSides - n * dS) / (squaredSides * squaredSides);
+  }
 
   void moveTo(int v, const SurfacePoint& p)
   {
@@ -292,6 +321,142 @@ bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
   return bestScore != current; // only a better score replaces the start
 }
 
+/// The vertices within `rings` edges of a folded triangle.
+std::vector<int> regionAroundFolds(const FoldedRemesh& mesh, int rings)
+{
+  std::vector<char> inRegion(mesh.neighbourCount(), 0);
+  std::vector<int> region;
+  const auto add = [&](int v)
+  {
+    if (!inRegion[v])
+      inRegion[v] = 1, region.push_back(v);
+  };
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    if (mesh.signedQuality(t) < 0.0)
+      for (int v : mesh.triangle(t))
+        add(v);
+  for (int ring = 0, begin = 0; ring < rings; ++ring)
+  {
+    const int end = static_cast<int>(region.size());
+    for (int i = begin; i < end; ++i)
+      for (int w : mesh.neighbours(region[i]))
+        add(w);
+    begin = end;
+  }
+  return region;
+}
+
+/// Penalty of a triangle of signed quality q: zero once it is fat enough,
+/// so it pushes folded triangles and needles alike towards fatter shapes.
+double penalty(double q)
+{
+  return q < kFatEnough ? (kFatEnough - q) * (kFatEnough - q) : 0.0;
+}
+
+/// Gradient of the penalty of the triangles around `v` with respect to its
+/// position, in the tangent plane.
+Vec3 penaltyGradient(const FoldedRemesh& mesh, int v)
+{
+  Vec3 gradient = Vec3::Zero();
+  for (int t : mesh.trianglesOf(v))
+  {
+    const double q = mesh.signedQuality(t);
+    if (q >= kFatEnough)
+      continue;
+    const Triangle& tri = mesh.triangle(t);
+    const int corner = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
+    gradient += -2.0 * (kFatEnough - q) * mesh.qualityGradient(t, corner);
+  }
+  return gradient - mesh.normal(v) * mesh.normal(v).dot(gradient);
+}
+
+/// Where single moves are stuck (a band of needles sheared at the scale of
+/// several triangles, each move folding a neighbour), moves every vertex
+/// near the remaining folds at once down the gradient of the penalty of
+/// their triangles, along the surface and within `reach` of `origin`, with
+/// a backtracking step. A step may fold a triangle on the way as long as
+/// the penalty falls; the state with fewest folds is kept, and nothing
+/// moves unless it has fewer folds than the start.
+void untangle(const EditableMesh& surface, FoldedRemesh& mesh, const std::vector<Vec3>& origin, double reach)
+{
+  std::vector<int> region = regionAroundFolds(mesh, kUntangledRings);
+  region.erase(std::remove_if(region.begin(), region.end(), [&](int v) { return mesh.pinned(v); }), region.end());
+  std::vector<int> triangles;
+  for (int v : region)
+    triangles.insert(triangles.end(), mesh.trianglesOf(v).begin(), mesh.trianglesOf(v).end());
+  std::sort(triangles.begin(), triangles.end());
+  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+  const auto measure = [&](int& folded)
+  {
+    double total = 0.0;
+    folded = 0;
+    for (int t : triangles)
+    {
+      const double q = mesh.signedQuality(t);
+      total += penalty(q);
+      folded += q < 0.0;
+    }
+    return total;
+  };
+  const auto snapshot = [&]
+  {
+    std::vector<SurfacePoint> points;
+    for (int v : region)
+      points.push_back(mesh.point(v));
+    return points;
+  };
+  const auto restore = [&](const std::vector<SurfacePoint>& points)
+  {
+    for (std::size_t i = 0; i < region.size(); ++i)
+      mesh.moveTo(region[i], points[i]);
+  };
+
+  int folded = 0;
+  double energy = measure(folded);
+  const int foldedAtStart = folded;
+  const std::vector<SurfacePoint> atStart = snapshot();
+  int fewestFolded = folded;
+  std::vector<SurfacePoint> fewest = atStart;
+  double step = 1.0; // of the reach, for the vertex with the steepest gradient
+  for (int iteration = 0; iteration < kUntangleIterations && folded > 0; ++iteration)
+  {
+    std::vector<Vec3> gradient(region.size());
+    double steepest = 0.0;
+    for (std::size_t i = 0; i < region.size(); ++i)
+      steepest = std::max(steepest, (gradient[i] = penaltyGradient(mesh, region[i])).norm());
+    if (!(steepest > 0.0))
+      break;
+    const std::vector<SurfacePoint> start = snapshot();
+    bool lowered = false;
+    for (int attempt = 0; attempt < kBacktrackingSteps && !lowered; ++attempt, step *= 0.5)
+    {
+      for (std::size_t i = 0; i < region.size(); ++i)
+      {
+        const int v = region[i];
+        mesh.moveTo(v, walk(surface, start[i], -step * reach * gradient[i] / steepest));
+        if ((mesh.position(v) - origin[v]).norm() > reach)
+          mesh.moveTo(v, start[i]);
+      }
+      int trialFolded = 0;
+      const double trial = measure(trialFolded);
+      if ((lowered = trial < energy))
+        energy = trial, folded = trialFolded;
+      else
+        restore(start);
+    }
+    if (!lowered)
+      break;
+    step = std::min(1.0, 4.0 * step);
+    if (folded < fewestFolded)
+      fewestFolded = folded, fewest = snapshot();
+  }
+  // Moving many vertices for fatter needles alone is not worth it.
+  if (fewestFolded == foldedAtStart)
+    restore(atStart);
+  else if (folded > fewestFolded)
+    restore(fewest);
+}
+
 } // namespace
 
 int countFoldedTriangles(
@@ -353,25 +518,31 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       reach[v] = options.reach * std::min(shortest[v], kTypicalEdgeShare * typicalEdge);
   FoldRepairReport result;
   result.foldedBefore = mesh.foldedCount();
-  std::vector<char> moved(n, 0);
+  std::vector<SurfacePoint> placed;
+  for (int v = 0; v < n; ++v)
+    placed.push_back(mesh.point(v));
   for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
   {
     bool any = false;
     for (int v : mesh.verticesOfFoldedTriangles())
-      if (improveVertex(surface, mesh, v, origin[v], reach[v]))
-        any = true, moved[v] = 1;
+      any = improveVertex(surface, mesh, v, origin[v], reach[v]) || any;
     if (!any)
       break;
   }
+  if (mesh.foldedCount() > 0)
+    untangle(surface, mesh, origin, options.reach * kTypicalEdgeShare * typicalEdge);
   result.foldedAfter = mesh.foldedCount();
 
   for (int v = 0; v < n; ++v)
   {
-    if (!moved[v])
+    const SurfacePoint& p = mesh.point(v);
+    // A vertex put back, or walked onto the same point seen from the next
+    // triangle, keeps its sample as placed.
+    if (mesh.pinned(v) || (p.triangle == placed[v].triangle && p.coordinates == placed[v].coordinates) ||
+        mesh.position(v) == origin[v])
       continue;
     ++result.movedVertices;
     result.largestMove = std::max(result.largestMove, (mesh.position(v) - origin[v]).norm());
-    const SurfacePoint& p = mesh.point(v);
     SurfaceSample& s = samples[v];
     s.triangle = p.triangle;
     for (int k = 0; k < 3; ++k)

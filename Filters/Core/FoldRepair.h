@@ -17,8 +17,10 @@ struct FoldRepairOptions
 {
   /// \brief Sweeps over the vertices of folded triangles at most.
   int maximumSweeps = 20;
-  /// \brief A vertex stays within this fraction of its shortest remesh
-  ///        edge (as placed) from where its parameterization put it, so the
+  /// \brief How far a vertex may go from where its parameterization put
+  ///        it: this many times its shortest remesh edge (as placed) when
+  ///        it moves alone, and never more than this many quarters of the
+  ///        remesh's median edge, also when moved with its region. So the
   ///        correspondence moves less than the remesh's own resolution.
   double reach = 2.0;
 };
@@ -55,7 +57,11 @@ std::vector<char> foldedTriangles(
 /// and keeps the one that leaves fewest folded triangles around the vertex,
 /// then the best worst shape quality (signed by the triangle's agreement
 /// with the surface). Vertices with most folds around them go first.
-/// Landmark samples never move.
+/// Where that gets stuck (a band of needles sheared at the scale of several
+/// triangles, where each single move folds a neighbour), the vertices
+/// within three rings of the remaining folds move together down the
+/// gradient of a penalty on thin and folded triangles, and the state with
+/// fewest folds is kept. Landmark samples never move.
 /// Every moved sample still names the surface triangle it lies in.
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
   const FoldRepairOptions& options = {}, FoldRepairReport* report = nullptr);

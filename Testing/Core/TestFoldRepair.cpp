@@ -128,7 +128,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
   const BaseDomain domain = test::realBaseDomain("381");
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
-  // Measured at level 5 with L0 from 381: 417 -> 120 on Spot (its two
+  // Measured at level 5 with L0 from 381: 417 -> 31 on Spot (its two
   // thin wedge patches keep the rest), 59 -> 4 on 391.
   for (const std::string name : { "spot", "391" })
   {
@@ -142,11 +142,17 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     EXPECT_EQ(report.foldedBefore, countFoldedTriangles(remesh, parameterized.net.mesh, placed.samples)) << name;
     EXPECT_EQ(report.foldedAfter, countFoldedTriangles(remesh, parameterized.net.mesh, samples)) << name;
     EXPECT_GT(report.foldedBefore, 50) << name;
-    EXPECT_LT(report.foldedAfter, (name == "spot" ? 0.35 : 0.1) * report.foldedBefore) << name;
+    EXPECT_LT(report.foldedAfter, (name == "spot" ? 0.12 : 0.1) * report.foldedBefore) << name;
 
     const std::vector<Vec3> repaired = samplePositions(parameterized.net, samples);
     const double diagonal = boundingBoxDiagonal(model.data.mesh);
     const ClosestPointQuery input(model.data.mesh);
+    std::vector<double> lengths;
+    for (const Triangle& tri : remesh.triangles)
+      for (int k = 0; k < 3; ++k)
+        lengths.push_back((placed.positions[tri[(k + 1) % 3]] - placed.positions[tri[k]]).norm());
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    const double medianEdge = lengths[lengths.size() / 2];
     int moved = 0;
     for (int v = 0; v < remesh.vertexCount(); ++v)
     {
@@ -155,10 +161,9 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
       ++moved;
       EXPECT_GE(v, domain.mesh.vertexCount()) << name << ": landmark " << v << " moved";
       EXPECT_LT(input.closest(repaired[v]).distance, 1e-6 * diagonal) << name << " vertex " << v;
-      double shortest = std::numeric_limits<double>::infinity();
-      for (int w : neighboursOf(remesh, v))
-        shortest = std::min(shortest, (placed.positions[w] - placed.positions[v]).norm());
-      EXPECT_LE((repaired[v] - placed.positions[v]).norm(), 2.0 * shortest * (1 + 1e-9)) << name << " vertex " << v;
+      // Within half the median edge (FoldRepairOptions::reach 2 times a
+      // quarter of it), whether moved alone or with its region.
+      EXPECT_LE((repaired[v] - placed.positions[v]).norm(), 0.5 * medianEdge * 1.01) << name << " vertex " << v;
     }
     EXPECT_EQ(moved, report.movedVertices) << name;
 
