@@ -1,12 +1,13 @@
 #include "FoldRepair.h"
 
+#include "SurfaceWalk.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
-#include <utility>
 
 namespace cmp
 {
@@ -14,12 +15,10 @@ namespace cmp
 namespace
 {
 
-/// Directions tried around a vertex, and the fractions of its reach.
+/// Directions tried around a vertex, and the step lengths tried, as
+/// fractions of its current shortest edge.
 constexpr int kDirections = 16;
 constexpr double kStepFractions[] = { 0.05, 0.1, 0.2, 0.4, 0.8 };
-/// Surface triangles crossed by one walk at most (a walk is shorter than a
-/// remesh edge, so this only stops a walk circling a degenerate spot).
-constexpr int kMaximumCrossings = 2000;
 /// A vertex's reach is counted in its shortest edge, but never in more than
 /// this share of the remesh's median edge.
 constexpr double kTypicalEdgeShare = 0.25;
@@ -34,116 +33,127 @@ constexpr int kUntangleIterations = 300;
 constexpr int kBacktrackingSteps = 12;
 constexpr double kFatEnough = 0.05;
 
-/// A point of the surface: a triangle and barycentric coordinates in the
-/// order of its vertices.
-struct SurfacePoint
+/// Shape quality of triangle (a, b, c) (1 when equilateral, 0 when flat),
+/// negative when it faces against `under`; 1 when `under` is zero (all
+/// corners are landmarks, which record no surface normal).
+double signedQuality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& under)
 {
-  int triangle = -1;
-  Eigen::Vector3d coordinates = Eigen::Vector3d::Zero();
-};
-
-Vec3 unitNormal(const EditableMesh& surface, int t)
-{
-  const Triangle& tri = surface.triangle(t);
-  const Vec3 n = (surface.point(tri[1]) - surface.point(tri[0])).cross(surface.point(tri[2]) - surface.point(tri[0]));
-  const double length = n.norm();
-  return length > 0.0 ? Vec3(n / length) : Vec3::Zero();
+  if (under.isZero())
+    return 1.0;
+  const double squaredSides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+  if (!(squaredSides > 0.0))
+    return 0.0;
+  return 2.0 * std::sqrt(3.0) * (b - a).cross(c - a).dot(under.normalized()) / squaredSides;
 }
 
-Vec3 positionOf(const EditableMesh& surface, const SurfacePoint& p)
+/// Gradient of signedQuality(a, b, c, under) with respect to `a`, `under`
+/// held fixed.
+Vec3 signedQualityGradient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& under)
 {
-  const Triangle& tri = surface.triangle(p.triangle);
-  return p.coordinates[0] * surface.point(tri[0]) + p.coordinates[1] * surface.point(tri[1]) +
-    p.coordinates[2] * surface.point(tri[2]);
+  const double squaredSides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+  if (under.isZero() || !(squaredSides > 0.0))
+    return Vec3::Zero();
+  const Vec3 u = under.normalized();
+  const double n = (b - a).cross(c - a).dot(u);
+  const Vec3 dn = (b - c).cross(u), dS = 2.0 * (2.0 * a - b - c);
+  return 2.0 * std::sqrt(3.0) * (dn * squaredSides - n * dS) / (squaredSides * squaredSides);
 }
 
-/// Barycentric coordinates of `q` projected into the plane of triangle `t`;
-/// false for a triangle too thin to have a plane.
-bool planeCoordinates(const EditableMesh& surface, int t, const Vec3& q, Eigen::Vector3d& coordinates)
+/// Checks that `samples` fit `remesh` and `surface`: one per vertex, each a
+/// landmark (triangle -1) or a convex combination of the vertices of a
+/// live surface triangle.
+Status checkSamples(const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
 {
-  const Triangle& tri = surface.triangle(t);
-  const Vec3 a = surface.point(tri[0]);
-  const Vec3 e1 = surface.point(tri[1]) - a, e2 = surface.point(tri[2]) - a, d = q - a;
-  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2);
-  const double determinant = d11 * d22 - d12 * d12;
-  if (!(determinant > 1e-24 * d11 * d22))
-    return false;
-  const double v = (d22 * d.dot(e1) - d12 * d.dot(e2)) / determinant;
-  const double w = (d11 * d.dot(e2) - d12 * d.dot(e1)) / determinant;
-  coordinates = { 1.0 - v - w, v, w };
-  return true;
-}
-
-/// Moves `p` by `step` along the surface: straight within a triangle, and
-/// across an edge the rest of the step is turned about that edge into the
-/// next triangle's plane (the surface unfolded locally). Stops early at a
-/// degenerate triangle.
-SurfacePoint walk(const EditableMesh& surface, SurfacePoint p, Vec3 step)
-{
-  for (int crossing = 0; crossing < kMaximumCrossings; ++crossing)
+  const int n = remesh.vertexCount();
+  if (samples.size() != static_cast<std::size_t>(n))
+    return Status::error("fold repair: " + std::to_string(samples.size()) + " samples for a remesh of " +
+      std::to_string(n) + " vertices");
+  for (std::size_t t = 0; t < remesh.triangles.size(); ++t)
+    for (int v : remesh.triangles[t])
+      if (v < 0 || v >= n)
+        return Status::error("fold repair: remesh triangle " + std::to_string(t) + " has vertex " +
+          std::to_string(v) + " of " + std::to_string(n));
+  for (int v = 0; v < n; ++v)
   {
-    const Vec3 normal = unitNormal(surface, p.triangle);
-    step -= normal * normal.dot(step);
-    Eigen::Vector3d target;
-    if (normal.isZero() || !planeCoordinates(surface, p.triangle, positionOf(surface, p) + step, target))
-      return p;
-    if (target.minCoeff() >= 0.0)
-    {
-      p.coordinates = target;
-      return p;
-    }
-    // The side left first: the corner whose coordinate reaches zero first.
-    int corner = -1;
-    double fraction = 1.0;
+    const SurfaceSample& s = samples[v];
+    const std::string which = "fold repair: sample " + std::to_string(v);
+    if (s.triangle < -1 || s.triangle >= surface.triangleCount())
+      return Status::error(which + " names surface triangle " + std::to_string(s.triangle) + " of " +
+        std::to_string(surface.triangleCount()));
+    if (s.triangle >= 0 && surface.isRemoved(s.triangle))
+      return Status::error(which + " names removed surface triangle " + std::to_string(s.triangle));
+    double sum = 0.0;
     for (int k = 0; k < 3; ++k)
-      if (target[k] < 0.0)
+    {
+      if (s.vertex[k] >= surface.vertexCount() || (s.vertex[k] < 0 && s.weight[k] != 0.0))
+        return Status::error(which + " names surface vertex " + std::to_string(s.vertex[k]));
+      if (s.triangle >= 0 && s.weight[k] != 0.0)
       {
-        const double at = p.coordinates[k] / (p.coordinates[k] - target[k]);
-        if (corner < 0 || at < fraction)
-          corner = k, fraction = at;
+        const Triangle& tri = surface.triangle(s.triangle);
+        if (std::find(tri.begin(), tri.end(), s.vertex[k]) == tri.end())
+          return Status::error(which + ": its vertices are not those of its triangle " + std::to_string(s.triangle));
       }
-    fraction = std::clamp(fraction, 0.0, 1.0);
-    Eigen::Vector3d exit = (p.coordinates + fraction * (target - p.coordinates)).cwiseMax(0.0);
-    exit[corner] = 0.0;
-    exit /= exit.sum();
-
-    const int h = 3 * p.triangle + (corner + 1) % 3; // runs along the side left
-    const int across = surface.opposite(h);
-    if (across < 0)
-    {
-      p.coordinates = exit;
-      return p;
+      if (!(s.weight[k] >= 0.0))
+        return Status::error(which + ": its weights are not barycentric (finite, >= 0, sum 1)");
+      sum += s.weight[k];
     }
-    const int u = surface.from(h), v = surface.to(h);
-    const Vec3 along = (surface.point(v) - surface.point(u)).normalized();
-    const Vec3 rest = (1.0 - fraction) * step;
-    const double alongLength = rest.dot(along);
-    const double acrossLength = (rest - alongLength * along).norm();
-    const int next = EditableMesh::triangleOf(across);
-    const int apex = surface.from(EditableMesh::prev(across));
-    Vec3 inward = surface.point(apex) - surface.point(u);
-    inward -= along * along.dot(inward);
-    if (inward.norm() > 0.0)
-      inward.normalize();
-    step = alongLength * along + acrossLength * inward;
-
-    SurfacePoint entered;
-    entered.triangle = next;
-    const Triangle& tri = surface.triangle(next);
-    for (int k = 0; k < 3; ++k)
-      entered.coordinates[k] = tri[k] == u ? exit[(corner + 1) % 3] : tri[k] == v ? exit[(corner + 2) % 3] : 0.0;
-    p = entered;
-    if (step.squaredNorm() == 0.0)
-      return p;
+    if (!(std::abs(sum - 1.0) < 1e-9))
+      return Status::error(which + ": its weights are not barycentric (finite, >= 0, sum 1)");
   }
+  return {};
+}
+
+Vec3 samplePoint(const EditableMesh& surface, const SurfaceSample& s)
+{
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (s.vertex[k] >= 0)
+      p += s.weight[k] * surface.point(s.vertex[k]);
   return p;
 }
 
-/// The remesh around the samples: positions, surface normals under each
-/// vertex, and which triangles touch which vertex.
+/// Per remesh triangle, its signed quality against the surface under it.
+std::vector<double> triangleQualities(
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+{
+  std::vector<Vec3> positions(samples.size()), normals(samples.size(), Vec3::Zero());
+  for (std::size_t v = 0; v < samples.size(); ++v)
+  {
+    positions[v] = samplePoint(surface, samples[v]);
+    if (samples[v].triangle >= 0)
+      normals[v] = surfaceTriangleNormal(surface, samples[v].triangle);
+  }
+  std::vector<double> qualities(remesh.triangles.size());
+  for (std::size_t t = 0; t < qualities.size(); ++t)
+  {
+    const Triangle& tri = remesh.triangles[t];
+    qualities[t] = signedQuality(positions[tri[0]], positions[tri[1]], positions[tri[2]],
+      normals[tri[0]] + normals[tri[1]] + normals[tri[2]]);
+  }
+  return qualities;
+}
+
+/// What moving one vertex does to the triangles around it.
+struct VertexScore
+{
+  int folds = 0;      ///< Triangles facing against the surface.
+  int bad = 0;        ///< Folded or flatter than kLeastQuality.
+  double worst = 1.0; ///< The smallest signed quality.
+
+  /// Fewer bad triangles, then a fatter worst one: a sliver that agrees
+  /// with the surface is one small tilt away from folding.
+  bool betterThan(const VertexScore& other) const
+  {
+    return bad < other.bad || (bad == other.bad && worst > other.worst);
+  }
+};
+
+/// The remesh on the surface while it is repaired: where each vertex is,
+/// the surface normal under it, and which triangles and vertices touch it.
 class FoldedRemesh
 {
 public:
+  /// Samples must have passed checkSamples().
   FoldedRemesh(const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
     : remesh_(remesh)
     , surface_(surface)
@@ -155,22 +165,19 @@ public:
   {
     for (std::size_t v = 0; v < samples.size(); ++v)
     {
-      positions_[v] = Vec3::Zero();
-      for (int k = 0; k < 3; ++k)
-        if (samples[v].vertex[k] >= 0)
-          positions_[v] += samples[v].weight[k] * surface.point(samples[v].vertex[k]);
+      positions_[v] = samplePoint(surface, samples[v]);
       if (samples[v].triangle < 0)
         continue; // a landmark: pinned, and records no normal
-      SurfacePoint& p = points_[v];
+      TrianglePoint& p = points_[v];
       p.triangle = samples[v].triangle;
       const Triangle& tri = surface.triangle(p.triangle);
       for (int j = 0; j < 3; ++j)
         for (int k = 0; k < 3; ++k)
           if (tri[k] == samples[v].vertex[j])
             p.coordinates[k] += samples[v].weight[j];
-      normals_[v] = unitNormal(surface, p.triangle);
+      normals_[v] = surfaceTriangleNormal(surface, p.triangle);
     }
-    for (int t = 0; t < static_cast<int>(remesh.triangles.size()); ++t)
+    for (int t = 0; t < triangleCount(); ++t)
       for (int k = 0; k < 3; ++k)
       {
         const int a = remesh.triangles[t][k], b = remesh.triangles[t][(k + 1) % 3];
@@ -185,67 +192,47 @@ public:
     }
   }
 
+  int vertexCount() const { return static_cast<int>(positions_.size()); }
+  int triangleCount() const { return static_cast<int>(remesh_.triangles.size()); }
+  const Triangle& triangle(int t) const { return remesh_.triangles[t]; }
   bool pinned(int v) const { return points_[v].triangle < 0; }
   const Vec3& position(int v) const { return positions_[v]; }
   const Vec3& normal(int v) const { return normals_[v]; }
-  const SurfacePoint& point(int v) const { return points_[v]; }
+  const TrianglePoint& point(int v) const { return points_[v]; }
   const std::vector<int>& neighbours(int v) const { return neighbours_[v]; }
   const std::vector<int>& trianglesOf(int v) const { return trianglesOf_[v]; }
-  int neighbourCount() const { return static_cast<int>(neighbours_.size()); }
-  const Triangle& triangle(int t) const { return remesh_.triangles[t]; }
-  int triangleCount() const { return static_cast<int>(remesh_.triangles.size()); }
-  /// Gradient of signedQuality(t) with respect to corner k's position
-  /// (the surface normals under the corners held fixed).
-  Vec3 qualityGradient(int t, int k) const
-  {
-    const Triangle& tri = remesh_.triangles[t];
-    const Vec3 &a = positions_[tri[k]], &b = positions_[tri[(k + 1) % 3]], &c = positions_[tri[(k + 2) % 3]];
-    const Vec3 under = normals_[tri[0]] + normals_[tri[1]] + normals_[tri[2]];
-    if (under.isZero())
-      return Vec3::Zero();
-    const Vec3 u = under.normalized();
-    const double squaredSides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
-    if (!(squaredSides > 0.0))
-      return Vec3::Zero();
-    const double n = (b - a).cross(c - a).dot(u);
-    const Vec3 dn = (b - c).cross(u);
-    const Vec3 dS = 2.0 * (2.0 * a - b - c);
-    return 2.0 * std::sqrt(3.0) * (dn * squaredSides - n * dS) / (squaredSides * squaredSides);
-  }
 
-  void moveTo(int v, const SurfacePoint& p)
+  void moveTo(int v, const TrianglePoint& p)
   {
     points_[v] = p;
-    positions_[v] = positionOf(surface_, p);
-    normals_[v] = unitNormal(surface_, p.triangle);
+    positions_[v] = surfacePosition(surface_, p);
+    normals_[v] = surfaceTriangleNormal(surface_, p.triangle);
   }
 
-  /// Shape quality of triangle `t` (1 when equilateral, 0 when flat),
-  /// negative when it faces against the surface under it; 1 when all its
-  /// corners are landmarks, which record no surface normal.
   double signedQuality(int t) const
   {
     const Triangle& tri = remesh_.triangles[t];
-    const Vec3 &a = positions_[tri[0]], &b = positions_[tri[1]], &c = positions_[tri[2]];
-    const Vec3 under = normals_[tri[0]] + normals_[tri[1]] + normals_[tri[2]];
-    const double squaredSides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
-    if (under.isZero())
-      return 1.0;
-    if (!(squaredSides > 0.0))
-      return 0.0;
-    return 2.0 * std::sqrt(3.0) * (b - a).cross(c - a).dot(under.normalized()) / squaredSides;
+    return cmp::signedQuality(positions_[tri[0]], positions_[tri[1]], positions_[tri[2]], under(t));
   }
 
-  /// Bad triangles around `v` (folded, or so flat that a fold was traded
-  /// for a collapse), and the worst signed quality among them.
-  std::pair<int, double> aroundVertex(int v) const
+  /// Gradient of signedQuality(t) with respect to the position of its
+  /// corner `v`.
+  Vec3 qualityGradient(int t, int v) const
   {
-    std::pair<int, double> score{ 0, 1.0 };
+    const Triangle& tri = remesh_.triangles[t];
+    const int k = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
+    return signedQualityGradient(positions_[tri[k]], positions_[tri[(k + 1) % 3]], positions_[tri[(k + 2) % 3]], under(t));
+  }
+
+  VertexScore aroundVertex(int v) const
+  {
+    VertexScore score;
     for (int t : trianglesOf_[v])
     {
-      const double a = signedQuality(t);
-      score.first += a < kLeastQuality;
-      score.second = std::min(score.second, a);
+      const double q = signedQuality(t);
+      score.folds += q < 0.0;
+      score.bad += q < kLeastQuality;
+      score.worst = std::min(score.worst, q);
     }
     return score;
   }
@@ -257,7 +244,7 @@ public:
   {
     std::vector<int> folds(positions_.size(), 0);
     std::vector<int> vertices;
-    for (int t = 0; t < static_cast<int>(remesh_.triangles.size()); ++t)
+    for (int t = 0; t < triangleCount(); ++t)
       if (signedQuality(t) < 0.0)
         for (int v : remesh_.triangles[t])
           if (!pinned(v) && folds[v]++ == 0)
@@ -269,62 +256,65 @@ public:
   int foldedCount() const
   {
     int folded = 0;
-    for (int t = 0; t < static_cast<int>(remesh_.triangles.size()); ++t)
+    for (int t = 0; t < triangleCount(); ++t)
       folded += signedQuality(t) < 0.0;
     return folded;
   }
 
 private:
+  /// The surface normal under triangle `t`: the sum of its corners'.
+  Vec3 under(int t) const
+  {
+    const Triangle& tri = remesh_.triangles[t];
+    return normals_[tri[0]] + normals_[tri[1]] + normals_[tri[2]];
+  }
+
   const SemiRegularMesh& remesh_;
   const EditableMesh& surface_;
-  std::vector<SurfacePoint> points_;
+  std::vector<TrianglePoint> points_;
   std::vector<Vec3> positions_;
   std::vector<Vec3> normals_;
   std::vector<std::vector<int>> trianglesOf_;
   std::vector<std::vector<int>> neighbours_;
 };
 
-/// Tries short moves of `v` around its current place and keeps the best;
-/// returns whether it moved.
+/// Tries short moves of `v` around its current place and keeps the best
+/// one that folds no more triangles around it; returns whether it moved.
 bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const Vec3& origin, double reach)
 {
-  const std::pair<int, double> current = mesh.aroundVertex(v);
-  if (current.first == 0)
+  const VertexScore current = mesh.aroundVertex(v);
+  if (current.folds == 0)
     return false;
   double shortest = std::numeric_limits<double>::infinity();
   for (int w : mesh.neighbours(v))
     shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
   const Vec3 normal = mesh.normal(v);
   const Vec3 first = normal.unitOrthogonal(), second = normal.cross(first);
-  const SurfacePoint start = mesh.point(v);
-  SurfacePoint best = start;
-  std::pair<int, double> bestScore = current;
+  const TrianglePoint start = mesh.point(v);
+  TrianglePoint best = start;
+  VertexScore bestScore = current;
+  bool moved = false;
   for (double fraction : kStepFractions)
     for (int k = 0; k < kDirections; ++k)
     {
       const double angle = 2.0 * M_PI * k / kDirections;
-      const SurfacePoint tried =
-        walk(surface, start, fraction * shortest * (std::cos(angle) * first + std::sin(angle) * second));
+      const TrianglePoint tried =
+        walkOnSurface(surface, start, fraction * shortest * (std::cos(angle) * first + std::sin(angle) * second));
       mesh.moveTo(v, tried);
       if ((mesh.position(v) - origin).norm() > reach)
         continue;
-      const std::pair<int, double> score = mesh.aroundVertex(v);
-      // Fewer folds first, then a fatter worst triangle: a sliver that
-      // agrees with the surface is one small tilt away from folding.
-      if (score.first < bestScore.first || (score.first == bestScore.first && score.second > bestScore.second))
-      {
-        bestScore = score;
-        best = tried;
-      }
+      const VertexScore score = mesh.aroundVertex(v);
+      if (score.folds <= current.folds && score.betterThan(bestScore))
+        bestScore = score, best = tried, moved = true;
     }
   mesh.moveTo(v, best);
-  return bestScore != current; // only a better score replaces the start
+  return moved;
 }
 
-/// The vertices within `rings` edges of a folded triangle.
+/// The movable vertices within `rings` edges of a folded triangle.
 std::vector<int> regionAroundFolds(const FoldedRemesh& mesh, int rings)
 {
-  std::vector<char> inRegion(mesh.neighbourCount(), 0);
+  std::vector<char> inRegion(mesh.vertexCount(), 0);
   std::vector<int> region;
   const auto add = [&](int v)
   {
@@ -343,6 +333,7 @@ std::vector<int> regionAroundFolds(const FoldedRemesh& mesh, int rings)
         add(w);
     begin = end;
   }
+  region.erase(std::remove_if(region.begin(), region.end(), [&](int v) { return mesh.pinned(v); }), region.end());
   return region;
 }
 
@@ -361,188 +352,174 @@ Vec3 penaltyGradient(const FoldedRemesh& mesh, int v)
   for (int t : mesh.trianglesOf(v))
   {
     const double q = mesh.signedQuality(t);
-    if (q >= kFatEnough)
-      continue;
-    const Triangle& tri = mesh.triangle(t);
-    const int corner = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
-    gradient += -2.0 * (kFatEnough - q) * mesh.qualityGradient(t, corner);
+    if (q < kFatEnough)
+      gradient += -2.0 * (kFatEnough - q) * mesh.qualityGradient(t, v);
   }
   return gradient - mesh.normal(v) * mesh.normal(v).dot(gradient);
 }
 
-/// Where single moves are stuck (a band of needles sheared at the scale of
-/// several triangles, each move folding a neighbour), moves every vertex
-/// near the remaining folds at once down the gradient of the penalty of
-/// their triangles, along the surface and within `reach` of `origin`, with
-/// a backtracking step. A step may fold a triangle on the way as long as
-/// the penalty falls; the state with fewest folds is kept, and nothing
-/// moves unless it has fewer folds than the start.
-void untangle(const EditableMesh& surface, FoldedRemesh& mesh, const std::vector<Vec3>& origin, double reach)
+/// The vertices near the remaining folds and the triangles they touch, for
+/// moving them together.
+class FoldRegion
 {
-  std::vector<int> region = regionAroundFolds(mesh, kUntangledRings);
-  region.erase(std::remove_if(region.begin(), region.end(), [&](int v) { return mesh.pinned(v); }), region.end());
-  std::vector<int> triangles;
-  for (int v : region)
-    triangles.insert(triangles.end(), mesh.trianglesOf(v).begin(), mesh.trianglesOf(v).end());
-  std::sort(triangles.begin(), triangles.end());
-  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
-  const auto measure = [&](int& folded)
+public:
+  FoldRegion(FoldedRemesh& mesh, std::vector<int> vertices)
+    : mesh_(mesh)
+    , vertices_(std::move(vertices))
+  {
+    for (int v : vertices_)
+      triangles_.insert(triangles_.end(), mesh.trianglesOf(v).begin(), mesh.trianglesOf(v).end());
+    std::sort(triangles_.begin(), triangles_.end());
+    triangles_.erase(std::unique(triangles_.begin(), triangles_.end()), triangles_.end());
+  }
+
+  const std::vector<int>& vertices() const { return vertices_; }
+
+  /// Total penalty of the region's triangles, and how many are folded.
+  double penalty(int& folded) const
   {
     double total = 0.0;
     folded = 0;
-    for (int t : triangles)
+    for (int t : triangles_)
     {
-      const double q = mesh.signedQuality(t);
-      total += penalty(q);
+      const double q = mesh_.signedQuality(t);
+      total += cmp::penalty(q);
       folded += q < 0.0;
     }
     return total;
-  };
-  const auto snapshot = [&]
-  {
-    std::vector<SurfacePoint> points;
-    for (int v : region)
-      points.push_back(mesh.point(v));
-    return points;
-  };
-  const auto restore = [&](const std::vector<SurfacePoint>& points)
-  {
-    for (std::size_t i = 0; i < region.size(); ++i)
-      mesh.moveTo(region[i], points[i]);
-  };
+  }
 
+  std::vector<TrianglePoint> snapshot() const
+  {
+    std::vector<TrianglePoint> points;
+    for (int v : vertices_)
+      points.push_back(mesh_.point(v));
+    return points;
+  }
+
+  void restore(const std::vector<TrianglePoint>& points)
+  {
+    for (std::size_t i = 0; i < vertices_.size(); ++i)
+      mesh_.moveTo(vertices_[i], points[i]);
+  }
+
+private:
+  FoldedRemesh& mesh_;
+  std::vector<int> vertices_;
+  std::vector<int> triangles_;
+};
+
+/// One backtracking gradient step of the whole region: the steepest vertex
+/// moves `step` times `reach`, the others in proportion, each along the
+/// surface and staying within `reach` of `origin`; the step halves until
+/// the penalty falls. Returns the step taken (0 if none lowered it).
+double descend(const EditableMesh& surface, FoldedRemesh& mesh, FoldRegion& region, const std::vector<Vec3>& origin,
+  double reach, double step, double& energy, int& folded)
+{
+  const std::vector<int>& vertices = region.vertices();
+  std::vector<Vec3> gradient(vertices.size());
+  double steepest = 0.0;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    steepest = std::max(steepest, (gradient[i] = penaltyGradient(mesh, vertices[i])).norm());
+  if (!(steepest > 0.0))
+    return 0.0;
+  const std::vector<TrianglePoint> start = region.snapshot();
+  for (int attempt = 0; attempt < kBacktrackingSteps; ++attempt, step *= 0.5)
+  {
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+    {
+      const int v = vertices[i];
+      mesh.moveTo(v, walkOnSurface(surface, start[i], -step * reach * gradient[i] / steepest));
+      if ((mesh.position(v) - origin[v]).norm() > reach)
+        mesh.moveTo(v, start[i]);
+    }
+    int trialFolded = 0;
+    const double trial = region.penalty(trialFolded);
+    if (trial < energy)
+    {
+      energy = trial;
+      folded = trialFolded;
+      return step;
+    }
+    region.restore(start);
+  }
+  return 0.0;
+}
+
+/// Where single moves are stuck (a band of needles sheared at the scale of
+/// several triangles, each move folding a neighbour), moves the vertices
+/// near the remaining folds together down the gradient of their triangles'
+/// penalty. A step may fold a triangle on the way as long as the penalty
+/// falls; the state with fewest folds is kept, and nothing moves unless it
+/// has fewer folds than the start.
+void untangle(const EditableMesh& surface, FoldedRemesh& mesh, const std::vector<Vec3>& origin, double reach)
+{
+  FoldRegion region(mesh, regionAroundFolds(mesh, kUntangledRings));
   int folded = 0;
-  double energy = measure(folded);
+  double energy = region.penalty(folded);
   const int foldedAtStart = folded;
-  const std::vector<SurfacePoint> atStart = snapshot();
+  const std::vector<TrianglePoint> atStart = region.snapshot();
   int fewestFolded = folded;
-  std::vector<SurfacePoint> fewest = atStart;
-  double step = 1.0; // of the reach, for the vertex with the steepest gradient
+  std::vector<TrianglePoint> fewest = atStart;
+  double step = 1.0;
   for (int iteration = 0; iteration < kUntangleIterations && folded > 0; ++iteration)
   {
-    std::vector<Vec3> gradient(region.size());
-    double steepest = 0.0;
-    for (std::size_t i = 0; i < region.size(); ++i)
-      steepest = std::max(steepest, (gradient[i] = penaltyGradient(mesh, region[i])).norm());
-    if (!(steepest > 0.0))
+    const double taken = descend(surface, mesh, region, origin, reach, step, energy, folded);
+    if (!(taken > 0.0))
       break;
-    const std::vector<SurfacePoint> start = snapshot();
-    bool lowered = false;
-    for (int attempt = 0; attempt < kBacktrackingSteps && !lowered; ++attempt, step *= 0.5)
-    {
-      for (std::size_t i = 0; i < region.size(); ++i)
-      {
-        const int v = region[i];
-        mesh.moveTo(v, walk(surface, start[i], -step * reach * gradient[i] / steepest));
-        if ((mesh.position(v) - origin[v]).norm() > reach)
-          mesh.moveTo(v, start[i]);
-      }
-      int trialFolded = 0;
-      const double trial = measure(trialFolded);
-      if ((lowered = trial < energy))
-        energy = trial, folded = trialFolded;
-      else
-        restore(start);
-    }
-    if (!lowered)
-      break;
-    step = std::min(1.0, 4.0 * step);
+    step = std::min(1.0, 2.0 * taken);
     if (folded < fewestFolded)
-      fewestFolded = folded, fewest = snapshot();
+      fewestFolded = folded, fewest = region.snapshot();
   }
   // Moving many vertices for fatter needles alone is not worth it.
   if (fewestFolded == foldedAtStart)
-    restore(atStart);
+    region.restore(atStart);
   else if (folded > fewestFolded)
-    restore(fewest);
+    region.restore(fewest);
 }
 
-} // namespace
-
-int countFoldedTriangles(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+/// The median length of the remesh's edges.
+double medianEdgeLength(const FoldedRemesh& mesh)
 {
-  return FoldedRemesh(remesh, surface, samples).foldedCount();
-}
-
-std::vector<char> foldedTriangles(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
-{
-  const FoldedRemesh mesh(remesh, surface, samples);
-  std::vector<char> folded(remesh.triangles.size(), 0);
-  for (std::size_t t = 0; t < folded.size(); ++t)
-    folded[t] = mesh.signedQuality(static_cast<int>(t)) < 0.0;
-  return folded;
-}
-
-Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
-  const FoldRepairOptions& options, FoldRepairReport* report)
-{
-  if (samples.size() != static_cast<std::size_t>(remesh.vertexCount()))
-    return Status::error("fold repair: " + std::to_string(samples.size()) + " samples for a remesh of " +
-      std::to_string(remesh.vertexCount()) + " vertices");
-  for (const SurfaceSample& s : samples)
-    if (s.triangle >= surface.triangleCount())
-      return Status::error("fold repair: a sample names surface triangle " + std::to_string(s.triangle) +
-        " of " + std::to_string(surface.triangleCount()));
-  if (!(options.reach >= 0.0) || options.maximumSweeps < 0)
-    return Status::error("fold repair: the reach must be >= 0 and the sweeps >= 0");
-
-  FoldedRemesh mesh(remesh, surface, samples);
-  const int n = remesh.vertexCount();
-  std::vector<Vec3> origin(n);
-  std::vector<double> shortest(n, std::numeric_limits<double>::infinity()), lengths;
-  for (int v = 0; v < n; ++v)
-  {
-    origin[v] = mesh.position(v);
+  std::vector<double> lengths;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
     for (int w : mesh.neighbours(v))
-    {
-      const double length = (mesh.position(w) - origin[v]).norm();
-      shortest[v] = std::min(shortest[v], length);
       if (v < w)
-        lengths.push_back(length);
-    }
-  }
-  // Long edges mean a coarsely sampled part (a tip, a ridge), where moving
-  // a vertex by its own edge length would cut into the shape: there the
-  // reach is counted in typical edges instead.
-  double typicalEdge = 0.0;
-  if (!lengths.empty())
-  {
-    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-    typicalEdge = lengths[lengths.size() / 2];
-  }
-  std::vector<double> reach(n, 0.0);
-  for (int v = 0; v < n; ++v)
-    if (std::isfinite(shortest[v]))
-      reach[v] = options.reach * std::min(shortest[v], kTypicalEdgeShare * typicalEdge);
-  FoldRepairReport result;
-  result.foldedBefore = mesh.foldedCount();
-  std::vector<SurfacePoint> placed;
-  for (int v = 0; v < n; ++v)
-    placed.push_back(mesh.point(v));
-  for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
-  {
-    bool any = false;
-    for (int v : mesh.verticesOfFoldedTriangles())
-      any = improveVertex(surface, mesh, v, origin[v], reach[v]) || any;
-    if (!any)
-      break;
-  }
-  if (mesh.foldedCount() > 0)
-    untangle(surface, mesh, origin, options.reach * kTypicalEdgeShare * typicalEdge);
-  result.foldedAfter = mesh.foldedCount();
+        lengths.push_back((mesh.position(w) - mesh.position(v)).norm());
+  if (lengths.empty())
+    return 0.0;
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return lengths[lengths.size() / 2];
+}
 
-  for (int v = 0; v < n; ++v)
+/// How far each vertex may go alone: `reach` shortest edges, but at most a
+/// `reach` quarter of the median edge. Long edges mean a coarsely sampled
+/// part (a tip, a ridge), where moving a vertex by its own edge length would
+/// cut into the shape.
+std::vector<double> singleMoveReach(const FoldedRemesh& mesh, double reach, double medianEdge)
+{
+  std::vector<double> result(mesh.vertexCount(), 0.0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    const SurfacePoint& p = mesh.point(v);
-    // A vertex put back, or walked onto the same point seen from the next
-    // triangle, keeps its sample as placed.
-    if (mesh.pinned(v) || (p.triangle == placed[v].triangle && p.coordinates == placed[v].coordinates) ||
-        mesh.position(v) == origin[v])
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int w : mesh.neighbours(v))
+      shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
+    if (std::isfinite(shortest))
+      result[v] = reach * std::min(shortest, kTypicalEdgeShare * medianEdge);
+  }
+  return result;
+}
+
+/// Writes every vertex that left its sample's point back into `samples`,
+/// and counts those whose position changed.
+void writeBack(const EditableMesh& surface, const FoldedRemesh& mesh, const std::vector<TrianglePoint>& placed,
+  const std::vector<Vec3>& origin, std::vector<SurfaceSample>& samples, FoldRepairReport& report)
+{
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const TrianglePoint& p = mesh.point(v);
+    if (mesh.pinned(v) || (p.triangle == placed[v].triangle && p.coordinates == placed[v].coordinates))
       continue;
-    ++result.movedVertices;
-    result.largestMove = std::max(result.largestMove, (mesh.position(v) - origin[v]).norm());
     SurfaceSample& s = samples[v];
     s.triangle = p.triangle;
     for (int k = 0; k < 3; ++k)
@@ -550,6 +527,64 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       s.vertex[k] = surface.triangle(p.triangle)[k];
       s.weight[k] = p.coordinates[k];
     }
+    // The same point seen from the next triangle is not a move.
+    const double moved = (mesh.position(v) - origin[v]).norm();
+    if (moved > 0.0)
+    {
+      ++report.movedVertices;
+      report.largestMove = std::max(report.largestMove, moved);
+    }
+  }
+}
+
+} // namespace
+
+int countFoldedTriangles(
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+{
+  const std::vector<double> qualities = triangleQualities(remesh, surface, samples);
+  return static_cast<int>(std::count_if(qualities.begin(), qualities.end(), [](double q) { return q < 0.0; }));
+}
+
+std::vector<char> foldedTriangles(
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+{
+  const std::vector<double> qualities = triangleQualities(remesh, surface, samples);
+  std::vector<char> folded(qualities.size());
+  std::transform(qualities.begin(), qualities.end(), folded.begin(), [](double q) { return q < 0.0; });
+  return folded;
+}
+
+Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
+  const FoldRepairOptions& options, FoldRepairReport* report)
+{
+  if (Status status = checkSamples(remesh, surface, samples); !status.ok())
+    return status;
+  if (!(options.reach >= 0.0) || options.maximumSweeps < 0)
+    return Status::error("fold repair: the reach must be >= 0 and the sweeps >= 0");
+  FoldRepairReport result;
+  result.foldedBefore = result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
+  if (result.foldedBefore > 0)
+  {
+    FoldedRemesh mesh(remesh, surface, samples);
+    std::vector<Vec3> origin;
+    std::vector<TrianglePoint> placed;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      origin.push_back(mesh.position(v)), placed.push_back(mesh.point(v));
+    const double medianEdge = medianEdgeLength(mesh);
+    const std::vector<double> reach = singleMoveReach(mesh, options.reach, medianEdge);
+    for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
+    {
+      bool any = false;
+      for (int v : mesh.verticesOfFoldedTriangles())
+        any = improveVertex(surface, mesh, v, origin[v], reach[v]) || any;
+      if (!any)
+        break;
+    }
+    if (mesh.foldedCount() > 0)
+      untangle(surface, mesh, origin, options.reach * kTypicalEdgeShare * medianEdge);
+    writeBack(surface, mesh, placed, origin, samples, result);
+    result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   }
   if (report)
     *report = result;

@@ -54,15 +54,17 @@ std::vector<char> foldedTriangles(
 /// short side, which curvature can tip over. Each sweep tries, for every
 /// vertex of a folded triangle, short moves in 16 directions of the tangent
 /// plane (walked across the surface's triangles, so the vertex stays on it)
-/// and keeps the one that leaves fewest folded triangles around the vertex,
-/// then the best worst shape quality (signed by the triangle's agreement
-/// with the surface). Vertices with most folds around them go first.
-/// Where that gets stuck (a band of needles sheared at the scale of several
-/// triangles, where each single move folds a neighbour), the vertices
-/// within three rings of the remaining folds move together down the
-/// gradient of a penalty on thin and folded triangles, and the state with
-/// fewest folds is kept. Landmark samples never move.
-/// Every moved sample still names the surface triangle it lies in.
+/// and keeps the one that leaves fewest bad triangles around the vertex
+/// (folded, or so flat that a fold would be traded for a collapse), then
+/// the best worst shape quality (signed by the triangle's agreement with
+/// the surface), never one with more folds. Vertices with most folds around
+/// them go first. Where that gets stuck (a band of needles sheared at the
+/// scale of several triangles, where each single move folds a neighbour),
+/// the vertices within three rings of the remaining folds move together
+/// down the gradient of a penalty on thin and folded triangles, and the
+/// state with fewest folds is kept. Landmark samples never move. Every
+/// moved sample still names the surface triangle it lies in. Fails,
+/// changing nothing, on samples that do not fit `remesh` and `surface`.
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
   const FoldRepairOptions& options = {}, FoldRepairReport* report = nullptr);
 

@@ -212,8 +212,8 @@ std::string remeshFiguresNote()
   return "`remesh` = semi-regular connectivity + placement on the surface + fold repair (as the filter's default "
          "RepairFolds) + positions, at level remesh_level (5, or 6 on the large model); fold_repair_seconds = the "
          "repair alone, remesh_folded_before_repair and remesh_folded_after_repair = remesh triangles facing against "
-         "the surface before and after it; `remesh_distance` (unrepaired remeshes) (not on the large model) is a measurement, not counted in "
-         "`total`: for levels 3 to 6 it builds the remesh and compares it with the input surface, "
+         "the surface before and after it; `remesh_distance` (not on the large model) is a measurement, not counted "
+         "in `total`: for levels 3 to 6 it builds the remesh (unrepaired) and compares it with the input surface, "
          "hausdorff_per_diagonal_lN = two-sided Hausdorff distance (both surfaces sampled at the points of a "
          "3-step barycentric grid per triangle) / bounding-box diagonal of the input, distance_seconds_lN = time of "
          "that distance computation alone (last run)";
