@@ -28,7 +28,7 @@ constexpr double kLeastQuality = 1e-3;
 /// Joint untangling of what single moves leave: rings of vertices around
 /// each remaining fold, gradient steps at most, halvings of a step at most,
 /// and the shape quality above which a triangle no longer pulls.
-constexpr int kUntangledRings = 3;
+constexpr int kUntangledRings = 5;
 constexpr int kUntangleIterations = 300;
 constexpr int kBacktrackingSteps = 12;
 constexpr double kFatEnough = 0.05;
@@ -446,15 +446,15 @@ double descend(const EditableMesh& surface, FoldedRemesh& mesh, FoldRegion& regi
   return 0.0;
 }
 
-/// Where single moves are stuck (a band of needles sheared at the scale of
-/// several triangles, each move folding a neighbour), moves the vertices
-/// near the remaining folds together down the gradient of their triangles'
-/// penalty. A step may fold a triangle on the way as long as the penalty
-/// falls; the state with fewest folds is kept, and nothing moves unless it
-/// has fewer folds than the start.
-void untangle(const EditableMesh& surface, FoldedRemesh& mesh, const std::vector<Vec3>& origin, double reach)
+/// Moves one connected part of the vertices near the remaining folds
+/// together down the gradient of their triangles' penalty. A step may fold
+/// a triangle on the way as long as the penalty falls; the state with
+/// fewest folds is kept, and nothing moves unless it has fewer folds than
+/// the start.
+void untanglePart(
+  const EditableMesh& surface, FoldedRemesh& mesh, const std::vector<Vec3>& origin, double reach, std::vector<int> part)
 {
-  FoldRegion region(mesh, regionAroundFolds(mesh, kUntangledRings));
+  FoldRegion region(mesh, std::move(part));
   int folded = 0;
   double energy = region.penalty(folded);
   const int foldedAtStart = folded;
@@ -476,6 +476,39 @@ void untangle(const EditableMesh& surface, FoldedRemesh& mesh, const std::vector
     region.restore(atStart);
   else if (folded > fewestFolded)
     region.restore(fewest);
+}
+
+/// `vertices` split into parts connected by remesh edges.
+std::vector<std::vector<int>> connectedParts(const FoldedRemesh& mesh, const std::vector<int>& vertices)
+{
+  std::vector<int> partOf(mesh.vertexCount(), -2); // -2: not given, -1: given, not yet reached
+  for (int v : vertices)
+    partOf[v] = -1;
+  std::vector<std::vector<int>> parts;
+  for (int seed : vertices)
+  {
+    if (partOf[seed] != -1)
+      continue;
+    parts.emplace_back();
+    std::vector<int>& part = parts.back();
+    partOf[seed] = static_cast<int>(parts.size()) - 1;
+    part.push_back(seed);
+    for (std::size_t i = 0; i < part.size(); ++i)
+      for (int w : mesh.neighbours(part[i]))
+        if (partOf[w] == -1)
+          partOf[w] = partOf[seed], part.push_back(w);
+  }
+  return parts;
+}
+
+/// Where single moves are stuck (a band of needles sheared at the scale of
+/// several triangles, each move folding a neighbour), untangles the
+/// vertices within a few rings of the remaining folds, each connected part
+/// on its own so that one stiff spot does not hold back the step elsewhere.
+void untangle(const EditableMesh& surface, FoldedRemesh& mesh, const std::vector<Vec3>& origin, double reach)
+{
+  for (std::vector<int>& part : connectedParts(mesh, regionAroundFolds(mesh, kUntangledRings)))
+    untanglePart(surface, mesh, origin, reach, std::move(part));
 }
 
 /// The median length of the remesh's edges.

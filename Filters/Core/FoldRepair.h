@@ -60,7 +60,7 @@ std::vector<char> foldedTriangles(
 /// the surface), never one with more folds. Vertices with most folds around
 /// them go first. Where that gets stuck (a band of needles sheared at the
 /// scale of several triangles, where each single move folds a neighbour),
-/// the vertices within three rings of the remaining folds move together
+/// the vertices within five rings of the remaining folds move together
 /// down the gradient of a penalty on thin and folded triangles, and the
 /// state with fewest folds is kept. Landmark samples never move. Every
 /// moved sample still names the surface triangle it lies in. Fails,

@@ -213,7 +213,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
   const BaseDomain domain = test::realBaseDomain("381");
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
-  // Measured at level 5 with L0 from 381: 417 -> 34 on Spot (its two
+  // Measured at level 5 with L0 from 381: 417 -> 28 on Spot (its two
   // thin wedge patches keep the rest), 59 -> 4 on 391.
   for (const std::string name : { "spot", "391" })
   {
