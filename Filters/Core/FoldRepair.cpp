@@ -62,7 +62,8 @@ Vec3 signedQualityGradient(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
 /// Checks that `samples` fit `remesh` and `surface`: one per vertex, each a
 /// landmark (triangle -1) or a convex combination of the vertices of a
 /// live surface triangle.
-Status checkSamples(const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+Status checkSamples(
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
 {
   const int n = remesh.vertexCount();
   if (samples.size() != static_cast<std::size_t>(n))
@@ -103,15 +104,6 @@ Status checkSamples(const SemiRegularMesh& remesh, const EditableMesh& surface, 
   return {};
 }
 
-Vec3 samplePoint(const EditableMesh& surface, const SurfaceSample& s)
-{
-  Vec3 p = Vec3::Zero();
-  for (int k = 0; k < 3; ++k)
-    if (s.vertex[k] >= 0)
-      p += s.weight[k] * surface.point(s.vertex[k]);
-  return p;
-}
-
 /// Per remesh triangle, its signed quality against the surface under it.
 std::vector<double> triangleQualities(
   const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
@@ -119,7 +111,7 @@ std::vector<double> triangleQualities(
   std::vector<Vec3> positions(samples.size()), normals(samples.size(), Vec3::Zero());
   for (std::size_t v = 0; v < samples.size(); ++v)
   {
-    positions[v] = samplePoint(surface, samples[v]);
+    positions[v] = samplePosition(surface, samples[v]);
     if (samples[v].triangle >= 0)
       normals[v] = surfaceTriangleNormal(surface, samples[v].triangle);
   }
@@ -165,7 +157,7 @@ public:
   {
     for (std::size_t v = 0; v < samples.size(); ++v)
     {
-      positions_[v] = samplePoint(surface, samples[v]);
+      positions_[v] = samplePosition(surface, samples[v]);
       if (samples[v].triangle < 0)
         continue; // a landmark: pinned, and records no normal
       TrianglePoint& p = points_[v];
@@ -221,7 +213,8 @@ public:
   {
     const Triangle& tri = remesh_.triangles[t];
     const int k = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
-    return signedQualityGradient(positions_[tri[k]], positions_[tri[(k + 1) % 3]], positions_[tri[(k + 2) % 3]], under(t));
+    return signedQualityGradient(
+      positions_[tri[k]], positions_[tri[(k + 1) % 3]], positions_[tri[(k + 2) % 3]], under(t));
   }
 
   VertexScore aroundVertex(int v) const

@@ -52,16 +52,6 @@ std::uint64_t edgeKey(int a, int b)
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
 }
 
-/// A sample's point: its weights on its (up to three) surface vertices.
-Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample)
-{
-  Vec3 p = Vec3::Zero();
-  for (int k = 0; k < 3; ++k)
-    if (sample.vertex[k] >= 0)
-      p += sample.weight[k] * mesh.point(sample.vertex[k]);
-  return p;
-}
-
 /// The dyadic midpoint of two located vertices, computed in `patch` (exact,
 /// so zeros stay zeros) and expressed canonically.
 BaseLocation midpointLocation(const BaseDomain& domain, const std::vector<std::vector<int>>& around,
@@ -609,6 +599,15 @@ Status placeOnSurface(
     if (Status s = surface.locate(remesh.locations[v], samples[v]); !s.ok())
       return Status::error("remesh vertex " + std::to_string(v) + ": " + s.message());
   return {};
+}
+
+Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample)
+{
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (sample.vertex[k] >= 0)
+      p += sample.weight[k] * mesh.point(sample.vertex[k]);
+  return p;
 }
 
 std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfaceSample>& samples)

@@ -143,6 +143,10 @@ Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const
 Status placeOnSurface(
   const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfaceSample>& samples);
 
+/// \brief The position of `sample` on `mesh`: its weights on its (up to
+///        three) vertices.
+Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample);
+
 /// \brief The positions of `samples` on the mesh of `net`.
 std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfaceSample>& samples);
 

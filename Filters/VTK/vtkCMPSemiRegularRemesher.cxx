@@ -401,7 +401,9 @@ int vtkCMPSemiRegularRemesher::RequestData(
   {
     results.push_back(vtkSmartPointer<vtkPolyData>::New());
     const auto progress = [this, m, modelCount](double f) { this->UpdateProgress(0.4 + 0.6 * (m + f) / modelCount); };
-    if (cmp::Status placed = models[m]->place(shared, this->ComputeDistance, this->RepairFolds, results.back(), progress); !placed.ok())
+    if (cmp::Status placed =
+          models[m]->place(shared, this->ComputeDistance, this->RepairFolds, results.back(), progress);
+        !placed.ok())
       return fail(names[m] + placed.message());
   }
   cmp::bridge::assembleOutput(input, output, results);
