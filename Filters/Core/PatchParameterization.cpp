@@ -1,6 +1,9 @@
 #include "PatchParameterization.h"
 
 #include "MeanValueSystem.h"
+#include "SymmetricDirichletRelaxation.h"
+
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -61,11 +64,6 @@ constexpr int kMaximumStretchIterations = 30;
 /// A patch whose smallest triangle has less than this share of its
 /// parameter area, relative to its share of the surface area, is crowded.
 constexpr double kCrowded = 1e-4;
-/// Re-solves of one patch's map at most while lowering its stretch.
-constexpr int kMaximumStretchSolves = 30;
-/// A lowered stretch norm that gains less than this factor ends the
-/// relaxation of a patch.
-constexpr double kLeastStretchGain = 1.001;
 /// Per-triangle squared stretch counted at most (a crushed or flipped
 /// triangle), so one triangle cannot make every map look equally bad.
 constexpr double kSquaredStretchCap = 1e16;
@@ -104,6 +102,17 @@ double smallestAreaRatio(const TriangleMesh& piece, const PatchAreas& areas, con
   return smallest;
 }
 
+/// The base triangle drawn equilateral with the patch's surface area, as a
+/// map from barycentric coordinates (of corners B and C) to the plane: its
+/// columns are corners B and C, corner A at the origin.
+Eigen::Matrix2d equilateralFrame(const PatchAreas& areas)
+{
+  const double side = std::sqrt(4.0 * areas.total / std::sqrt(3.0));
+  Eigen::Matrix2d frame;
+  frame << side, 0.5 * side, 0.0, 0.5 * std::sqrt(3.0) * side;
+  return frame;
+}
+
 /// Per triangle, the square of Sander's L2 stretch of the map from the
 /// base triangle (drawn equilateral with the patch's area) to the surface:
 /// 1 for an isometry, large where a protrusion crowds; capped, and the cap
@@ -111,9 +120,8 @@ double smallestAreaRatio(const TriangleMesh& piece, const PatchAreas& areas, con
 Eigen::VectorXd squaredTriangleStretch(const TriangleMesh& piece, const PatchAreas& areas,
   const Eigen::MatrixXd& barycentric)
 {
-  const double side = std::sqrt(4.0 * areas.total / std::sqrt(3.0));
-  const Eigen::Vector2d cornerB(side, 0.0), cornerC(0.5 * side, 0.5 * std::sqrt(3.0) * side);
-  const auto plane = [&](int v) -> Eigen::Vector2d { return barycentric(v, 0) * cornerB + barycentric(v, 1) * cornerC; };
+  const Eigen::Matrix2d frame = equilateralFrame(areas);
+  const auto plane = [&](int v) -> Eigen::Vector2d { return frame * barycentric.row(v).transpose(); };
   Eigen::VectorXd result(piece.triangleCount());
   for (int t = 0; t < piece.triangleCount(); ++t)
   {
@@ -150,29 +158,17 @@ Eigen::VectorXd vertexStretch(const TriangleMesh& piece, const PatchAreas& areas
   return result;
 }
 
-/// Sander's L2 stretch norm of a patch's map (1 for an isometry).
-double stretchNorm(const TriangleMesh& piece, const PatchAreas& areas, const Eigen::MatrixXd& barycentric)
-{
-  const Eigen::VectorXd squared = squaredTriangleStretch(piece, areas, barycentric);
-  double sum = 0.0;
-  for (int t = 0; t < piece.triangleCount(); ++t)
-    sum += areas.triangle[t] * squared[t];
-  return std::sqrt(sum / areas.total);
-}
-
 /// Spreads a crowded patch: lowers the weights towards stretched vertices
-/// (Yoshizawa, Belyaev, Seidel 2004) and keeps the least crowded map;
-/// returns the weights that give it. Weights spanning many orders of
-/// magnitude make late iterations unstable, hence the cap, the patience and
-/// keeping the best map.
-Eigen::SparseMatrix<double> spreadCrowded(const TriangleMesh& piece, const PatchAreas& areas,
+/// (Yoshizawa, Belyaev, Seidel 2004) and keeps the least crowded map.
+/// Weights spanning many orders of magnitude make late iterations unstable,
+/// hence the cap, the patience and keeping the best map.
+void spreadCrowded(const TriangleMesh& piece, const PatchAreas& areas,
   Eigen::SparseMatrix<double> weights, const std::vector<int>& fixedRow, const Eigen::MatrixXd& fixedValues,
   Eigen::MatrixXd& values)
 {
   double crowding = smallestAreaRatio(piece, areas, values);
   if (!(crowding < kCrowded))
-    return weights;
-  Eigen::SparseMatrix<double> kept = weights;
+    return;
   Eigen::MatrixXd relaxed = values;
   for (int iteration = 0, idle = 0; iteration < kMaximumStretchIterations && crowding < kCrowded && idle < 4;
        ++iteration, ++idle)
@@ -185,47 +181,32 @@ Eigen::SparseMatrix<double> spreadCrowded(const TriangleMesh& piece, const Patch
     {
       crowding = relaxedCrowding;
       values = relaxed;
-      kept = weights;
       idle = -1;
     }
   }
-  return kept;
 }
 
-/// Lowers the stretch of any patch's map (`lowerStretch`), continuing from
-/// `spreadCrowded()` with its reweighting:
-/// the weights towards every vertex are divided by its stretch raised to a
-/// step exponent, and the map is solved again. The undamped iteration
-/// overshoots after a few steps, so a step is kept only if it lowers the
-/// stretch norm and flips nothing; a rejected step halves the exponent, a
-/// kept one raises it again. Positive weights keep every map bijective.
-void lowerStretch(const TriangleMesh& piece, const PatchAreas& areas, Eigen::SparseMatrix<double> weights,
-  const std::vector<int>& fixedRow, const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
+/// Lowers the distortion of any patch's map (`lowerStretch`): symmetric
+/// Dirichlet relaxation in the plane, the base triangle drawn equilateral
+/// with the patch's surface area so that an isometry is the energy's
+/// minimum. Kept only if no triangle flipped on the way back to
+/// barycentric coordinates.
+void lowerStretch(const TriangleMesh& piece, const PatchAreas& areas, const std::vector<int>& fixedRow,
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
 {
-  double best = stretchNorm(piece, areas, values);
-  double exponent = 1.0;
-  Eigen::VectorXd stretch = vertexStretch(piece, areas, values);
-  Eigen::MatrixXd relaxed;
-  for (int solve = 0; solve < kMaximumStretchSolves && exponent > 1.0 / 64; ++solve)
-  {
-    Eigen::SparseMatrix<double> trial = weights * stretch.array().pow(-exponent).matrix().asDiagonal();
-    if (!solveConvexCombinationSystem(trial, fixedRow, fixedValues, relaxed).ok())
-      return;
-    const double norm = stretchNorm(piece, areas, relaxed);
-    if (!(norm < best) || !(smallestAreaRatio(piece, areas, relaxed) > 0.0))
-    {
-      exponent *= 0.5;
-      continue;
-    }
-    const double gain = best / norm;
-    best = norm;
+  const Eigen::Matrix2d frame = equilateralFrame(areas);
+  Eigen::MatrixXd plane = values * frame.transpose();
+  std::vector<char> fixed(fixedRow.size());
+  for (std::size_t v = 0; v < fixedRow.size(); ++v)
+    fixed[v] = fixedRow[v] >= 0;
+  if (!relaxSymmetricDirichlet(piece, fixed, plane).ok())
+    return;
+  Eigen::MatrixXd relaxed = plane * frame.transpose().inverse();
+  for (int v = 0; v < relaxed.rows(); ++v)
+    if (fixedRow[v] >= 0) // the curves' exact values, not their round trip through the plane
+      relaxed.row(v) = fixedValues.row(fixedRow[v]);
+  if (smallestAreaRatio(piece, areas, relaxed) > 0.0)
     values.swap(relaxed);
-    weights.swap(trial);
-    if (gain < kLeastStretchGain)
-      return;
-    stretch = vertexStretch(piece, areas, values);
-    exponent = std::min(1.0, 1.5 * exponent);
-  }
 }
 
 } // namespace
@@ -268,9 +249,9 @@ Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, Patch
     // Landmark-free protrusions (tails, ears) crowd exponentially in a mean
     // value map, down to zero area in double precision, and uniform remesh
     // samples then miss them.
-    weights = spreadCrowded(piece, areas, std::move(weights), fixedRow, fixedValues, values);
+    spreadCrowded(piece, areas, std::move(weights), fixedRow, fixedValues, values);
     if (options.lowerStretch)
-      lowerStretch(piece, areas, std::move(weights), fixedRow, fixedValues, values);
+      lowerStretch(piece, areas, fixedRow, fixedValues, values);
     const double crowding = smallestAreaRatio(piece, areas, values);
     out.smallestAreaRatio = std::min(out.smallestAreaRatio, crowding);
 

@@ -39,11 +39,11 @@ struct PatchParameterization
 /// \brief Tuning of `parameterizePatches()`.
 struct PatchParameterizationOptions
 {
-  /// \brief Lower the stretch of every patch's map, not only spread crowded
-  ///        ones: landmark-free protrusions (ears, horns, tails) get more of
-  ///        the base domain, so uniform remesh samples reach further into
-  ///        them, at the price of more folded remesh triangles elsewhere
-  ///        (measured in Documentation/known-issues.md).
+  /// \brief Lower the distortion of every patch's map, not only spread
+  ///        crowded ones: landmark-free protrusions (ears, horns, tails) get
+  ///        more of the base domain, so uniform remesh samples reach further
+  ///        into them (measured in Documentation/known-issues.md), at several
+  ///        times the parameterization's cost.
   bool lowerStretch = false;
 };
 
@@ -54,9 +54,8 @@ struct PatchParameterizationOptions
 ///        protrusion without a landmark) is re-solved with weights lowered
 ///        towards stretched vertices (Yoshizawa, Belyaev, Seidel 2004) while
 ///        that makes its most crowded triangle larger. With
-///        `options.lowerStretch`, every patch is then re-solved while that
-///        lowers Sander's L2 stretch norm (damped steps, each kept only if it
-///        lowers the norm and flips nothing).
+///        `options.lowerStretch`, every patch's map then relaxes towards an
+///        isometry (`relaxSymmetricDirichlet()`, flip-free steps).
 Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& out,
   const PatchParameterizationOptions& options = {});
 

@@ -298,11 +298,11 @@ TEST(NetStraightenerFilter, LowerStretchSpreadsTheEarsOf381)
         std::abs(coordinatesAfter->GetComponent(v, k) - coordinatesBefore->GetComponent(v, k)));
   }
   EXPECT_GT(largestMove, 0.01);
-  // Measured: the most crowded triangle gets 34x more of its share.
+  // Measured: the most crowded triangle gets 63x more of its share.
   const double crowdingBefore = fieldValue(before, "SmallestAreaRatio");
   const double crowdingAfter = fieldValue(after, "SmallestAreaRatio");
   EXPECT_GT(crowdingBefore, 0.0);
-  EXPECT_GT(crowdingAfter, 10.0 * crowdingBefore);
+  EXPECT_GT(crowdingAfter, 30.0 * crowdingBefore);
   std::cout << "381: smallest area ratio " << crowdingBefore << " -> " << crowdingAfter
             << " with LowerStretch, largest change of a base coordinate " << largestMove << "\n";
 }

@@ -1,0 +1,59 @@
+#pragma once
+/// \file SymmetricDirichletRelaxation.h
+/// \brief Lowers the distortion of a bijective map of a disk-like surface to
+///        the plane, its boundary held: symmetric Dirichlet energy, lowered
+///        by SLIM steps (Rabinovich, Poranne, Panozzo, Sorkine-Hornung 2017)
+///        with a line search that never lets a triangle flip.
+
+#include "Status.h"
+#include "TriangleMesh.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Tuning of `relaxSymmetricDirichlet()`.
+struct SymmetricDirichletOptions
+{
+  /// \brief Steps at most; most patch maps settle within 20, a crowded
+  ///        protrusion takes 100 or more.
+  int maximumIterations = 150;
+  /// \brief A step that lowers the energy by less than this fraction ends
+  ///        the relaxation.
+  double leastRelativeGain = 1e-4;
+};
+
+/// \brief What `relaxSymmetricDirichlet()` did.
+struct SymmetricDirichletReport
+{
+  int iterations = 0;         ///< Steps taken (each one lowered the energy).
+  double energyBefore = 0.0;  ///< Energy of the starting map.
+  double energyAfter = 0.0;   ///< Energy of the result.
+};
+
+/// \brief The symmetric Dirichlet energy of the map `plane` (n x 2, one row
+///        per vertex of `surface`): sum over triangles of area x (|J|^2 +
+///        |J^-1|^2), J the map's differential from the surface triangle to
+///        the plane; 4 x area for an isometry, infinite if a triangle of
+///        positive area has a flipped or degenerate image. Triangles of zero
+///        surface area do not count.
+double symmetricDirichletEnergy(const TriangleMesh& surface, const Eigen::MatrixXd& plane);
+
+/// \brief Moves the free vertices of `plane` (those with `fixed[v] == 0`)
+///        to lower the symmetric Dirichlet energy, which grows without bound
+///        as a triangle's image shrinks to nothing: crowded protrusions get
+///        room, and the map stays bijective (every step stops short of the
+///        first flip). Fixed vertices keep their rows bit for bit.
+///
+/// Every triangle's image must start counter-clockwise with positive area
+/// (a bijective map such as a Tutte or mean value embedding); fails, naming
+/// the problem, if it does not, if the sizes disagree, if a coordinate is
+/// not finite or if no vertex is fixed. Cost per step: one sparse Cholesky
+/// factorization of 2 x (free vertices) unknowns, its pattern analysed once.
+Status relaxSymmetricDirichlet(const TriangleMesh& surface, const std::vector<char>& fixed, Eigen::MatrixXd& plane,
+  const SymmetricDirichletOptions& options = {}, SymmetricDirichletReport* report = nullptr);
+
+} // namespace cmp

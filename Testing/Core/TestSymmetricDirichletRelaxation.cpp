@@ -1,0 +1,130 @@
+#include "SymmetricDirichletRelaxation.h"
+#include "TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace cmp;
+
+namespace
+{
+
+/// A flat square [-1, 1]^2 in the xy plane, `n` x `n` cells, each cut in two.
+TriangleMesh flatSquare(int n)
+{
+  TriangleMesh square;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      square.points.emplace_back(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n, 0.0);
+  const auto at = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+    {
+      square.triangles.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      square.triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  return square;
+}
+
+/// The square's own xy coordinates: an isometry.
+Eigen::MatrixXd identityMap(const TriangleMesh& square)
+{
+  Eigen::MatrixXd plane(square.vertexCount(), 2);
+  for (int v = 0; v < square.vertexCount(); ++v)
+    plane.row(v) << square.points[v].x(), square.points[v].y();
+  return plane;
+}
+
+std::vector<char> boundaryOfSquare(const TriangleMesh& square)
+{
+  std::vector<char> fixed(square.points.size(), 0);
+  for (int v = 0; v < square.vertexCount(); ++v)
+    fixed[v] = std::abs(square.points[v].x()) == 1.0 || std::abs(square.points[v].y()) == 1.0;
+  return fixed;
+}
+
+/// Smallest ratio of image area to surface area over the triangles.
+double smallestAreaRatio(const TriangleMesh& surface, const Eigen::MatrixXd& plane)
+{
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < surface.triangleCount(); ++t)
+  {
+    const Triangle& tri = surface.triangles[t];
+    const Eigen::Vector2d a = plane.row(tri[1]) - plane.row(tri[0]), b = plane.row(tri[2]) - plane.row(tri[0]);
+    smallest = std::min(smallest, 0.5 * (a.x() * b.y() - a.y() * b.x()) / triangleArea(surface, t));
+  }
+  return smallest;
+}
+
+} // namespace
+
+TEST(SymmetricDirichletRelaxation, AnIsometryIsLeftWhereItIs)
+{
+  const TriangleMesh square = flatSquare(8);
+  Eigen::MatrixXd plane = identityMap(square);
+  const Eigen::MatrixXd start = plane;
+  EXPECT_NEAR(symmetricDirichletEnergy(square, plane), 4.0 * 4.0, 1e-12); // 4 x area
+  SymmetricDirichletReport report;
+  ASSERT_TRUE(relaxSymmetricDirichlet(square, boundaryOfSquare(square), plane, {}, &report).ok());
+  EXPECT_EQ(report.iterations, 0);
+  EXPECT_LT((plane - start).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(SymmetricDirichletRelaxation, UncrushesAMapAndKeepsItBijective)
+{
+  // The interior pulled towards the centre by r -> r^6 (along the max
+  // norm, so the square's boundary stays put): a bijective map whose middle
+  // triangles get a tiny share of the area, like a protrusion in a mean
+  // value map. The isometry is the only minimum with that boundary.
+  const TriangleMesh square = flatSquare(16);
+  const std::vector<char> fixed = boundaryOfSquare(square);
+  const Eigen::MatrixXd isometry = identityMap(square);
+  Eigen::MatrixXd plane = isometry;
+  for (int v = 0; v < plane.rows(); ++v)
+  {
+    const double radius = plane.row(v).cwiseAbs().maxCoeff();
+    if (radius > 0.0)
+      plane.row(v) *= std::pow(radius, 5.0);
+  }
+  const double crushed = smallestAreaRatio(square, plane);
+  ASSERT_GT(crushed, 0.0);
+  ASSERT_LT(crushed, 1e-6);
+
+  SymmetricDirichletReport report;
+  ASSERT_TRUE(relaxSymmetricDirichlet(square, fixed, plane, {}, &report).ok());
+  EXPECT_GT(report.iterations, 0);
+  EXPECT_LT(report.energyAfter, report.energyBefore);
+  EXPECT_NEAR(report.energyAfter, symmetricDirichletEnergy(square, plane), 1e-9 * report.energyAfter);
+  EXPECT_LT(report.energyAfter, 1.01 * 16.0); // within 1% of the isometry's 4 x area
+  EXPECT_GT(smallestAreaRatio(square, plane), 0.5);
+  EXPECT_LT((plane - isometry).rowwise().norm().maxCoeff(), 0.05);
+  for (int v = 0; v < plane.rows(); ++v)
+    if (fixed[v])
+      EXPECT_EQ(plane.row(v), isometry.row(v)) << "boundary vertex " << v << " moved";
+  std::cout << "crushed square: smallest area ratio " << crushed << " -> " << smallestAreaRatio(square, plane)
+            << ", energy " << report.energyBefore << " -> " << report.energyAfter << " in " << report.iterations
+            << " steps\n";
+}
+
+TEST(SymmetricDirichletRelaxation, RefusesBadInputNamingTheProblem)
+{
+  const TriangleMesh square = flatSquare(4);
+  const std::vector<char> fixed = boundaryOfSquare(square);
+  const auto refused = [&](Eigen::MatrixXd plane, const std::vector<char>& mask, const std::string& expected) {
+    const Status status = relaxSymmetricDirichlet(square, mask, plane);
+    EXPECT_FALSE(status.ok()) << expected;
+    EXPECT_NE(status.message().find(expected), std::string::npos) << status.message();
+  };
+  const Eigen::MatrixXd plane = identityMap(square);
+  refused(plane.topRows(3), fixed, "coordinates for 25 vertices");
+  refused(plane, std::vector<char>(3, 1), "fixed-vertex mask has 3 entries");
+  Eigen::MatrixXd notFinite = plane;
+  notFinite(12, 0) = std::nan("");
+  refused(notFinite, fixed, "not finite");
+  refused(plane, std::vector<char>(square.points.size(), 0), "no vertex is fixed");
+  Eigen::MatrixXd mirrored = plane;
+  mirrored.col(0) *= -1.0;
+  refused(mirrored, fixed, "not bijective: triangle 0");
+}
