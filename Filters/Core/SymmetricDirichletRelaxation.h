@@ -22,8 +22,10 @@ struct SymmetricDirichletOptions
   ///        protrusion takes 100 or more.
   int maximumIterations = 150;
   /// \brief A step that lowers the energy by less than this fraction ends
-  ///        the relaxation.
-  double leastRelativeGain = 1e-4;
+  ///        the relaxation (1e-4 takes twice the time on a 1M-triangle
+  ///        surface for a 1% lower summed remesh Hausdorff distance on the
+  ///        SHREC'07 models).
+  double leastRelativeGain = 1e-3;
 };
 
 /// \brief What `relaxSymmetricDirichlet()` did.

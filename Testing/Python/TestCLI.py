@@ -839,7 +839,7 @@ def case_lower_stretch(tmp):
         check_equal(model["straighten"]["flipped_triangles"], 0, "flipped triangles %s" % flag)
         figures[bool(flag)] = (model["straighten"]["smallest_area_ratio"], model["remesh"]["hausdorff_per_diagonal"])
     (crowded, far), (spread, near) = figures[False], figures[True]
-    # Measured: smallest area ratio 0.0003 -> 0.020, Hausdorff 0.051 -> 0.014.
+    # Measured: smallest area ratio 0.0003 -> 0.025, Hausdorff 0.051 -> 0.014.
     check(spread > 30 * crowded, "smallest area ratio %g with --lower-stretch, %g without" % (spread, crowded))
     check(near < 0.5 * far, "Hausdorff distance %g with --lower-stretch, %g without" % (near, far))
     print("381 at level 5: smallest area ratio %g -> %g, Hausdorff distance %g -> %g of the diagonal"
