@@ -190,10 +190,13 @@ void spreadCrowded(const TriangleMesh& piece, const PatchAreas& areas,
 /// Dirichlet relaxation in the plane, the base triangle drawn equilateral
 /// with the patch's surface area so that an isometry is the energy's
 /// minimum. Kept only if no triangle flipped on the way back to
-/// barycentric coordinates.
+/// barycentric coordinates; otherwise the patch keeps the map it had, which
+/// is bijective too.
 void lowerStretch(const TriangleMesh& piece, const PatchAreas& areas, const std::vector<int>& fixedRow,
   const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
 {
+  if (!(areas.total > 0.0))
+    return; // no frame to relax in
   const Eigen::Matrix2d frame = equilateralFrame(areas);
   Eigen::MatrixXd plane = values * frame.transpose();
   std::vector<char> fixed(fixedRow.size());
@@ -205,7 +208,7 @@ void lowerStretch(const TriangleMesh& piece, const PatchAreas& areas, const std:
   for (int v = 0; v < relaxed.rows(); ++v)
     if (fixedRow[v] >= 0) // the curves' exact values, not their round trip through the plane
       relaxed.row(v) = fixedValues.row(fixedRow[v]);
-  if (smallestAreaRatio(piece, areas, relaxed) > 0.0)
+  if (relaxed.allFinite() && smallestAreaRatio(piece, areas, relaxed) > 0.0)
     values.swap(relaxed);
 }
 

@@ -33,13 +33,11 @@ std::vector<Eigen::Matrix<double, 2, 3>> cornerGradients(const TriangleMesh& sur
     const Vec3 normal = a.cross(b);
     gradients[t].setZero();
     if (!(normal.norm() > 0.0))
-      continue;
+      continue; // no area: the energy skips it (areas_ is 0 there)
     const Vec3 e1 = a.normalized(), e2 = normal.cross(a).normalized();
     Eigen::Matrix2d corners; // rows: corners 1 and 2 in the frame (corner 0 at the origin)
     corners << a.norm(), 0.0, b.dot(e1), b.dot(e2);
     gradients[t] = corners.inverse() * differences;
-    if (!gradients[t].allFinite())
-      gradients[t].setZero();
   }
   return gradients;
 }
@@ -68,7 +66,7 @@ public:
   {
     areas_.resize(surface.triangleCount());
     for (int t = 0; t < surface.triangleCount(); ++t)
-      areas_[t] = gradients_[t].isZero() ? 0.0 : triangleArea(surface, t);
+      areas_[t] = gradients_[t].allFinite() ? triangleArea(surface, t) : 0.0;
     for (std::size_t v = 0; v < fixed.size(); ++v)
       if (!fixed[v])
         unknown_[v] = unknowns_++;
@@ -92,7 +90,8 @@ public:
   }
 
   /// One SLIM step from `plane` (energy `energy`): both updated when the
-  /// step lowers the energy. Returns the relative gain (0 if none).
+  /// step lowers the energy. Returns the relative gain (1 from an infinite
+  /// energy, 0 if the step was not taken).
   double step(Eigen::MatrixXd& plane, double& energy)
   {
     Eigen::MatrixXd target;
@@ -106,7 +105,9 @@ public:
       const double trialEnergy = this->energy(trial);
       if (trialEnergy < energy)
       {
-        const double gain = (energy - trialEnergy) / energy;
+        // An energy that overflowed (a triangle crushed below double
+        // precision) counts any finite one as a full gain.
+        const double gain = std::isfinite(energy) ? (energy - trialEnergy) / energy : 1.0;
         plane.swap(trial);
         energy = trialEnergy;
         return gain;
@@ -219,8 +220,9 @@ private:
       const double discriminant = linear * linear - 4.0 * quadratic * constant;
       if (discriminant < 0.0)
         continue;
-      const double root = std::sqrt(discriminant);
-      for (double s : { (-linear - root) / (2.0 * quadratic), (-linear + root) / (2.0 * quadratic) })
+      // The cancellation-free pair of roots: q / quadratic and constant / q.
+      const double q = -0.5 * (linear + std::copysign(std::sqrt(discriminant), linear));
+      for (double s : { q / quadratic, q != 0.0 ? constant / q : 0.0 })
         if (s > 0.0)
           largest = std::min(largest, s);
     }
@@ -253,8 +255,8 @@ Status checkStart(const TriangleMesh& surface, const std::vector<char>& fixed, c
     const Triangle& tri = surface.triangles[t];
     const Eigen::Vector2d a = plane.row(tri[1]) - plane.row(tri[0]), b = plane.row(tri[2]) - plane.row(tri[0]);
     if (!(cross2(a, b) > 0.0) && triangleArea(surface, t) > 0.0)
-      return Status::error("the starting map is not bijective: triangle " + std::to_string(t) +
-        " has an image that is flipped or without area");
+      return Status::error("triangle " + std::to_string(t) +
+        " of the starting map is clockwise or has no area (a counter-clockwise bijective map is required)");
   }
   return {};
 }
@@ -271,6 +273,7 @@ Status relaxSymmetricDirichlet(const TriangleMesh& surface, const std::vector<ch
 {
   if (Status s = checkStart(surface, fixed, plane); !s.ok())
     return s;
+  const Eigen::MatrixXd start = plane;
   Relaxation relaxation(surface, fixed);
   double energy = relaxation.energy(plane);
   SymmetricDirichletReport done;
@@ -278,11 +281,15 @@ Status relaxSymmetricDirichlet(const TriangleMesh& surface, const std::vector<ch
   while (done.iterations < options.maximumIterations)
   {
     const double gain = relaxation.step(plane, energy);
-    if (gain > 0.0)
-      ++done.iterations;
-    if (!(gain >= options.leastRelativeGain))
+    if (!(gain > 0.0))
+      break;
+    ++done.iterations;
+    if (gain < options.leastRelativeGain)
       break;
   }
+  for (std::size_t v = 0; v < fixed.size(); ++v)
+    if (fixed[v]) // bit for bit, -0.0 included (a step adds +0.0 to it)
+      plane.row(v) = start.row(v);
   done.energyAfter = energy;
   if (report)
     *report = done;

@@ -53,8 +53,10 @@ double symmetricDirichletEnergy(const TriangleMesh& surface, const Eigen::Matrix
 /// Every triangle's image must start counter-clockwise with positive area
 /// (a bijective map such as a Tutte or mean value embedding); fails, naming
 /// the problem, if it does not, if the sizes disagree, if a coordinate is
-/// not finite or if no vertex is fixed. Cost per step: one sparse Cholesky
-/// factorization of 2 x (free vertices) unknowns, its pattern analysed once.
+/// not finite or if no vertex is fixed. A system that cannot be solved (a
+/// free vertex with no triangle of positive area) ends the relaxation with
+/// the map as it is. Cost per step: one sparse Cholesky factorization of
+/// 2 x (free vertices) unknowns, its pattern analysed once.
 Status relaxSymmetricDirichlet(const TriangleMesh& surface, const std::vector<char>& fixed, Eigen::MatrixXd& plane,
   const SymmetricDirichletOptions& options = {}, SymmetricDirichletReport* report = nullptr);
 

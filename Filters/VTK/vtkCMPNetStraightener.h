@@ -67,10 +67,10 @@ public:
   /// \brief Fraction of an edge's length within which curves snap to vertices.
   vtkGetMacro(SnapTolerance, double);
 
-  /// \brief Lower the stretch of every patch's map (default off): parts of
-  ///        the surface that carry no landmark (ears, horns, tails) get more
-  ///        of the base domain, so a uniform remesh reaches further into
-  ///        them, at the price of more remesh triangles folded elsewhere.
+  /// \brief Relax every patch's map towards an isometry (default off):
+  ///        parts of the surface that carry no landmark (ears, horns, tails)
+  ///        get more of the base domain, so a uniform remesh reaches further
+  ///        into them, at 5-7 times the parameterization's cost.
   ///        Off, only patches where such a part is crushed to almost no area
   ///        are spread.
   vtkSetMacro(LowerStretch, bool);
