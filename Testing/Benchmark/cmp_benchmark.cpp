@@ -226,7 +226,9 @@ std::string lowerStretchFiguresNote()
          "LowerStretch: lower_stretch_seconds = that parameterization alone, lower_stretch_smallest_area_ratio and "
          "lower_stretch_flipped_triangles as `parameterize` reports them, lower_stretch_hausdorff_per_diagonal_l5 "
          "(not on the large model) = the level-5 remesh's two-sided Hausdorff distance, to compare with "
-         "hausdorff_per_diagonal_l5";
+         "hausdorff_per_diagonal_l5, lower_stretch_folded_before_repair_l5 and _after_repair_l5 = its folded "
+         "triangles before and after the default fold repair, to compare with remesh_folded_before_repair and "
+         "remesh_folded_after_repair";
 }
 
 std::string waveletFiguresNote()
