@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # xvfb-run for the rendering tests: a display number not used by the tests
-# just before, and one more run when the X server could not be reached.
+# just before, and up to two more runs when the X server could not be reached.
 #
 # Each rendering test starts its own Xvfb with `xvfb-run -a`, and the tests
 # take turns (RESOURCE_LOCK). With `-a` alone every test starts its search at
@@ -10,8 +10,11 @@
 # (seen twice on 2026-11-24, each time right after another test had used
 # the same display). So the search starts at a number that moves on with
 # every run (a counter in the temporary folder, 100 to 499), and a test that
-# stops with that message, which means our code never ran, runs once more
-# on the next number. Any other failure is passed on as it is.
+# stops with that message, which means our code never ran, runs again on
+# the next number. Any other failure is passed on as it is. Two attempts
+# were not always enough: on 2026-11-24, with a helper compiling beside
+# `ctest -j2`, python.PluginShapeAnalysis lost its X server on two
+# displays in a row; so three attempts, two seconds apart.
 set -u
 counter_file="${TMPDIR:-/tmp}/cmp-xvfb-display-counter"
 stderr_log=$(mktemp)
@@ -27,15 +30,17 @@ next_display() {
 }
 
 status=1
-for attempt in 1 2; do
+attempts=3
+for attempt in $(seq 1 "$attempts"); do
   xvfb-run --server-num="$(next_display)" "$@" 2>"$stderr_log"
   status=$?
   cat "$stderr_log" >&2
   if [ "$status" -eq 0 ] || ! grep -q "bad X server connection" "$stderr_log"; then
     exit "$status"
   fi
-  if [ "$attempt" -eq 1 ]; then
-    echo "xvfb-run-retry: the X server could not be reached; running again once on another display" >&2
+  if [ "$attempt" -lt "$attempts" ]; then
+    echo "xvfb-run-retry: the X server could not be reached; running again on another display" >&2
+    sleep 2
   fi
 done
 exit "$status"
