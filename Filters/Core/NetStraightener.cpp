@@ -12,16 +12,9 @@ namespace cmp
 namespace
 {
 
-using Vec2 = Eigen::Vector2d;
-
 constexpr double kTwoPi = 6.283185307179586;
 /// Cuts closer than this fraction of an edge to its ends are moved away.
 constexpr double kSmallestCut = 1e-3;
-
-double cross2(const Vec2& a, const Vec2& b)
-{
-  return a.x() * b.y() - a.y() * b.x();
-}
 
 /// (1-t) a + t b, merged over the input vertices both points use. Both lie
 /// in one input triangle, so at most three vertices remain.

@@ -88,7 +88,7 @@ double imageShare(const Triangle& tri, const Eigen::MatrixXd& barycentric)
 {
   const Eigen::Vector2d e1 = barycentric.row(tri[1]) - barycentric.row(tri[0]);
   const Eigen::Vector2d e2 = barycentric.row(tri[2]) - barycentric.row(tri[0]);
-  return e1.x() * e2.y() - e1.y() * e2.x();
+  return cross2(e1, e2);
 }
 
 /// min over triangles of (share of the base triangle's area) / (share of

@@ -367,8 +367,6 @@ Status buildAdaptiveSemiRegularMesh(
 namespace
 {
 
-using Vec2 = Eigen::Vector2d;
-
 /// Point location in one patch's parameter triangle: a uniform grid of
 /// cells, each listing the surface triangles whose image's box meets it.
 class PatchGrid
@@ -434,11 +432,11 @@ private:
   {
     const auto& c = (*corners_)[i];
     const Vec2 e1 = c[1] - c[0], e2 = c[2] - c[0], d = q - c[0];
-    const double area = e1.x() * e2.y() - e1.y() * e2.x();
+    const double area = cross2(e1, e2);
     if (!(area > 0.0))
       return; // crowded to nothing: its neighbours cover the point too
-    const double w1 = (d.x() * e2.y() - d.y() * e2.x()) / area;
-    const double w2 = (e1.x() * d.y() - e1.y() * d.x()) / area;
+    const double w1 = cross2(d, e2) / area;
+    const double w2 = cross2(e1, d) / area;
     const double w0 = 1.0 - w1 - w2;
     const double s = std::min({ w0, w1, w2 });
     if (s > bestScore)

@@ -51,11 +51,6 @@ Eigen::Matrix2d jacobian(const Triangle& tri, const Eigen::Matrix<double, 2, 3>&
   return corners * gradient.transpose();
 }
 
-double cross2(const Eigen::Vector2d& p, const Eigen::Vector2d& q)
-{
-  return p.x() * q.y() - p.y() * q.x();
-}
-
 /// The relaxation of one map: the energy, the SLIM step and the flip-free
 /// step length, sharing the surface's gradients and the factorization.
 class Relaxation

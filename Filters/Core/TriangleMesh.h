@@ -14,6 +14,17 @@ namespace cmp
 /// \brief A 3D point or vector.
 using Vec3 = Eigen::Vector3d;
 
+/// \brief A point or vector of a parameter plane.
+using Vec2 = Eigen::Vector2d;
+
+/// \brief The z component of the cross product of two plane vectors: twice
+///        the signed area of the triangle they span (positive when `b` lies
+///        counter-clockwise of `a`).
+inline double cross2(const Vec2& a, const Vec2& b)
+{
+  return a.x() * b.y() - a.y() * b.x();
+}
+
 /// \brief Three vertex indices, counter-clockwise seen from outside.
 using Triangle = std::array<int, 3>;
 
