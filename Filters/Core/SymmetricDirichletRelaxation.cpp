@@ -51,8 +51,18 @@ Eigen::Matrix2d jacobian(const Triangle& tri, const Eigen::Matrix<double, 2, 3>&
   return corners * gradient.transpose();
 }
 
+/// Largest |log| of a singular value: how far, as a scale factor in either
+/// direction, a differential is from a rotation.
+double logDistortion(const Eigen::Matrix2d& J)
+{
+  const Eigen::Vector2d sigma = Eigen::JacobiSVD<Eigen::Matrix2d>(J).singularValues();
+  return std::max(std::abs(std::log(sigma[0])), std::abs(std::log(sigma[1])));
+}
+
 /// The relaxation of one map: the energy, the SLIM step and the flip-free
-/// step length, sharing the surface's gradients and the factorization.
+/// step length, sharing the surface's gradients and the factorization. The
+/// energy is measured against reference shapes: the surface's triangles,
+/// or during the progressive phase shapes between those and the map's.
 class Relaxation
 {
 public:
@@ -65,7 +75,37 @@ public:
     for (std::size_t v = 0; v < fixed.size(); ++v)
       if (!fixed[v])
         unknown_[v] = unknowns_++;
+    reference_ = gradients_;
   }
+
+  /// Largest `logDistortion()` of the map against the surface.
+  double largestDistortion(const Eigen::MatrixXd& plane) const
+  {
+    double largest = 0.0;
+    for (int t = 0; t < surface_.triangleCount(); ++t)
+      if (areas_[t] > 0.0)
+        largest = std::max(largest, logDistortion(jacobian(surface_.triangles[t], gradients_[t], plane)));
+    return largest;
+  }
+
+  /// Measures against the surface's triangles stretched along each map
+  /// differential's singular directions by its singular values raised to
+  /// `share` (0: the surface; 1: the map's own shapes, up to rotation).
+  /// Stretching is symmetric (V S^share V^T), so orientations are kept.
+  void measureAgainstIntermediateShapes(const Eigen::MatrixXd& plane, double share)
+  {
+    for (int t = 0; t < surface_.triangleCount(); ++t)
+    {
+      if (areas_[t] == 0.0)
+        continue;
+      const Eigen::JacobiSVD<Eigen::Matrix2d> svd(
+        jacobian(surface_.triangles[t], gradients_[t], plane), Eigen::ComputeFullU | Eigen::ComputeFullV);
+      const Eigen::Vector2d shrink = svd.singularValues().array().pow(-share);
+      reference_[t] = svd.matrixV() * shrink.asDiagonal() * svd.matrixV().transpose() * gradients_[t];
+    }
+  }
+
+  void measureAgainstSurface() { reference_ = gradients_; }
 
   double energy(const Eigen::MatrixXd& plane) const
   {
@@ -74,7 +114,7 @@ public:
     {
       if (areas_[t] == 0.0)
         continue;
-      const Eigen::Matrix2d J = jacobian(surface_.triangles[t], gradients_[t], plane);
+      const Eigen::Matrix2d J = jacobian(surface_.triangles[t], reference_[t], plane);
       const double det = J.determinant();
       if (!(det > 0.0))
         return std::numeric_limits<double>::infinity();
@@ -149,7 +189,7 @@ private:
     Eigen::VectorXd& rhs) const
   {
     const Triangle& tri = surface_.triangles[t];
-    const Eigen::Matrix<double, 2, 3>& G = gradients_[t];
+    const Eigen::Matrix<double, 2, 3>& G = reference_[t];
     const Eigen::Matrix2d J = jacobian(tri, G, plane);
     const Eigen::JacobiSVD<Eigen::Matrix2d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
     const Eigen::Matrix2d rotation = svd.matrixU() * svd.matrixV().transpose();
@@ -226,12 +266,50 @@ private:
 
   const TriangleMesh& surface_;
   std::vector<Eigen::Matrix<double, 2, 3>> gradients_;
+  std::vector<Eigen::Matrix<double, 2, 3>> reference_; // gradients_ of the reference shapes
   std::vector<double> areas_;
   std::vector<int> unknown_;
   int unknowns_ = 0;
   bool analyzed_ = false;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
 };
+
+/// The progressive phase: steps towards shapes `options.progressiveStepDistortion`
+/// away from the current map, while the energy against the surface falls by
+/// at least `options.leastRelativeGain` per step. A step that would raise
+/// it is undone and ends the phase.
+void relaxProgressively(Relaxation& relaxation, const SymmetricDirichletOptions& options, Eigen::MatrixXd& plane,
+  double& energy, SymmetricDirichletReport& done)
+{
+  const double stepDistortion = std::log(options.progressiveStepDistortion);
+  if (!(stepDistortion > 0.0) || !(relaxation.largestDistortion(plane) > std::log(options.progressiveAbove)))
+    return;
+  while (done.iterations < options.maximumIterations)
+  {
+    const double distortion = relaxation.largestDistortion(plane);
+    if (!(distortion > stepDistortion))
+      break;
+    const Eigen::MatrixXd before = plane;
+    relaxation.measureAgainstIntermediateShapes(plane, 1.0 - stepDistortion / distortion);
+    double referenceEnergy = relaxation.energy(plane);
+    const double referenceGain = relaxation.step(plane, referenceEnergy);
+    relaxation.measureAgainstSurface();
+    if (!(referenceGain > 0.0))
+      break;
+    const double after = relaxation.energy(plane);
+    if (!(after < energy))
+    {
+      plane = before;
+      break;
+    }
+    const double gain = std::isfinite(energy) ? (energy - after) / energy : 1.0;
+    energy = after;
+    ++done.iterations;
+    ++done.progressiveIterations;
+    if (gain < options.leastRelativeGain)
+      break;
+  }
+}
 
 Status checkStart(const TriangleMesh& surface, const std::vector<char>& fixed, const Eigen::MatrixXd& plane)
 {
@@ -273,6 +351,7 @@ Status relaxSymmetricDirichlet(const TriangleMesh& surface, const std::vector<ch
   double energy = relaxation.energy(plane);
   SymmetricDirichletReport done;
   done.energyBefore = energy;
+  relaxProgressively(relaxation, options, plane, energy, done);
   while (done.iterations < options.maximumIterations)
   {
     const double gain = relaxation.step(plane, energy);

@@ -3,7 +3,9 @@
 /// \brief Lowers the distortion of a bijective map of a disk-like surface to
 ///        the plane, its boundary held: symmetric Dirichlet energy, lowered
 ///        by SLIM steps (Rabinovich, Poranne, Panozzo, Sorkine-Hornung 2017)
-///        with a line search that never lets a triangle flip.
+///        with a line search that never lets a triangle flip; a crushed map
+///        first goes through progressive reference shapes (Liu, Ye, Wang,
+///        Xiang, Hu 2018).
 
 #include "Status.h"
 #include "TriangleMesh.h"
@@ -26,12 +28,26 @@ struct SymmetricDirichletOptions
   ///        surface for a 1% lower summed remesh Hausdorff distance on the
   ///        SHREC'07 models).
   double leastRelativeGain = 1e-3;
+  /// \brief A map that scales some triangle by more than this factor (in
+  ///        either direction) is first relaxed by progressive steps: each
+  ///        aims at reference shapes between the current triangles and the
+  ///        surface's, no further than `progressiveStepDistortion` from the
+  ///        current map, instead of at the surface itself. From a long
+  ///        protrusion squeezed a million times in a mean value map, plain
+  ///        steps are cut to a millionth by the flip-free line search and
+  ///        stall; progressive ones are not. Infinity turns them off.
+  double progressiveAbove = 1000.0;
+  /// \brief How far, as a scale factor, a progressive step's reference
+  ///        shapes lie from the current map; 1 or less turns progressive
+  ///        steps off.
+  double progressiveStepDistortion = 2.0;
 };
 
 /// \brief What `relaxSymmetricDirichlet()` did.
 struct SymmetricDirichletReport
 {
-  int iterations = 0;         ///< Steps taken (each one lowered the energy).
+  int iterations = 0;         ///< Steps taken, progressive ones included.
+  int progressiveIterations = 0; ///< Of those, steps towards reference shapes.
   double energyBefore = 0.0;  ///< Energy of the starting map.
   double energyAfter = 0.0;   ///< Energy of the result.
 };
@@ -49,6 +65,12 @@ double symmetricDirichletEnergy(const TriangleMesh& surface, const Eigen::Matrix
 ///        as a triangle's image shrinks to nothing: crowded protrusions get
 ///        room, and the map stays bijective (every step stops short of the
 ///        first flip). Fixed vertices keep their rows bit for bit.
+///
+/// A progressive step lowers the energy measured against its reference
+/// shapes; the energy against the surface usually falls with it, and the
+/// progressive phase ends, handing back to plain steps, when that energy
+/// falls by less than `leastRelativeGain` (a step that raises it is undone)
+/// or the map is within `progressiveStepDistortion` everywhere.
 ///
 /// Every triangle's image must start counter-clockwise with positive area
 /// (a bijective map such as a Tutte or mean value embedding); fails, naming

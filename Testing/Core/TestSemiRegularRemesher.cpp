@@ -145,9 +145,11 @@ TEST(SemiRegularRemesher, LowerStretchReachesFurtherIntoLandmarkFreeProtrusions)
   ASSERT_GT(domain.mesh.vertexCount(), 0);
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
-  // 381's ears and Spot's horns carry no landmark; measured at level 5:
-  // 0.051 -> 0.014 and 0.026 -> 0.005 of the diagonal.
-  for (const std::string name : { "381", "spot" })
+  // 381's ears, 385's long thin tail and Spot's horns carry no landmark;
+  // measured at level 5: 0.051 -> 0.014, 0.091 -> 0.019 (the tail's patch
+  // needs progressive steps: plain ones stall at 0.091) and 0.026 -> 0.005
+  // of the diagonal.
+  for (const std::string name : { "381", "385", "spot" })
   {
     const test::LandmarkedModel model = test::landmarkedRealModel(name);
     test::ParameterizedModel parameterized;
@@ -173,7 +175,7 @@ TEST(SemiRegularRemesher, LowerStretchReachesFurtherIntoLandmarkFreeProtrusions)
         flipped = trianglesAgainstSurface(remesh, parameterized.net, samples, positions);
     }
     EXPECT_LT(hausdorff[1], 0.4 * hausdorff[0]) << name;
-    EXPECT_LT(hausdorff[1], 0.02) << name;
+    EXPECT_LT(hausdorff[1], name == "385" ? 0.03 : 0.02) << name;
     // The price (known-issues.md): more folds; bounded as for the default.
     EXPECT_LT(flipped, (name == "spot" ? 0.012 : 0.005) * remesh.triangles.size()) << name;
     std::cout << name << ": level 5 Hausdorff distance " << hausdorff[0] << " -> " << hausdorff[1]
