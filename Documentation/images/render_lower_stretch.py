@@ -1,10 +1,15 @@
-"""Renders Documentation/images/lower-stretch-381.png: model 381 remeshed at
-level 5 with L0 from its own landmarks, Net Straightener's LowerStretch off
-(left) and on (right). Horns and ears carry no landmark: off, their patch
-map crushes them and the remesh gives them a few large triangles; on, the
-far horn is sampled finely.
+"""Renders Documentation/images/lower-stretch-MODEL.png: a SHREC'07 model
+remeshed at level 5 with L0 from its own landmarks, Net Straightener's
+LowerStretch off (left) and on (right).
 
-Usage: pvpython render_lower_stretch.py PLUGIN.so DATA_DIR OUTPUT.png
+- 381 (the default): horns and ears carry no landmark; off, their patch map
+  crushes them and the remesh gives them a few large triangles; on, the
+  far horn is sampled finely.
+- 385: the long thin tail carries no landmark (its "tail tip" landmark sits
+  at the root); off, the remesh leaves it out; on, progressive steps give
+  it part of its share of the base triangle.
+
+Usage: pvpython render_lower_stretch.py PLUGIN.so DATA_DIR OUTPUT.png [MODEL]
 """
 import sys
 
@@ -12,11 +17,19 @@ from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
 from render_common import landmarked_shrec, white_view
 
 plugin, data, output = sys.argv[1:4]
+model = sys.argv[4] if len(sys.argv) > 4 else "381"
+# Where to look from: focal point, position, and whether to project in
+# parallel (scale) or in perspective (view angle).
+cameras = {
+    "381": dict(focus=[0.62, 0.33, 0.12], position=[1.55, 0.75, 0.9], angle=30),  # the head, front and above
+    "385": dict(focus=[-0.68, -0.05, 0.0], position=[-0.68, -0.05, 3.0], scale=0.42),  # the tail, from the side
+}
+camera = cameras[model]
 LoadPlugin(plugin, ns=globals())
 
-cow = landmarked_shrec(globals(), data, "381")
-base = BaseDomainBuilder(Input=cow)
-tracer = FeatureNetTracer(Input=cow, BaseDomain=base)
+animal = landmarked_shrec(globals(), data, model)
+base = BaseDomainBuilder(Input=animal)
+tracer = FeatureNetTracer(Input=animal, BaseDomain=base)
 
 layout = CreateLayout("lower stretch")
 layout.SplitHorizontal(0, 0.5)
@@ -30,10 +43,13 @@ for cell, lower in ((1, 0), (2, 1)):
     shown.ColorArrayName = [None, ""]
     shown.DiffuseColor = [0.85, 0.85, 0.85]
     shown.EdgeColor = [0.25, 0.25, 0.25]
-    # The head, from the front and a little above.
-    view.CameraFocalPoint = [0.62, 0.33, 0.12]
-    view.CameraPosition = [1.55, 0.75, 0.9]
+    view.CameraFocalPoint = camera["focus"]
+    view.CameraPosition = camera["position"]
     view.CameraViewUp = [0, 1, 0]
-    view.CameraViewAngle = 30
+    if "scale" in camera:
+        view.CameraParallelProjection = 1
+        view.CameraParallelScale = camera["scale"]
+    else:
+        view.CameraViewAngle = camera["angle"]
 SaveScreenshot(output, layout, ImageResolution=[1400, 600])
 print("wrote", output)
