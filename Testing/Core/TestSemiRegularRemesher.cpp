@@ -75,6 +75,39 @@ int trianglesAgainstSurface(const SemiRegularMesh& remesh, const TracedNet& net,
   return flipped;
 }
 
+/// Real models parameterized on one base domain and indexed for remeshing;
+/// `collection` is what a split rule takes.
+struct IndexedModels
+{
+  std::vector<test::LandmarkedModel> models;
+  std::vector<test::ParameterizedModel> parameterized;
+  std::vector<ParameterizedSurface> surfaces;
+  std::vector<const ParameterizedSurface*> collection;
+};
+
+Status indexRealModels(
+  const std::vector<std::string>& names, const BaseDomain& domain, bool lowerStretch, IndexedModels& out)
+{
+  out.parameterized.resize(names.size()); // sized once: the surfaces point into it
+  out.surfaces.resize(names.size());
+  PatchParameterizationOptions options;
+  options.lowerStretch = lowerStretch;
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    out.models.push_back(test::landmarkedRealModel(names[i]));
+    test::ParameterizedModel& model = out.parameterized[i];
+    if (Status s = test::parameterizeOnDomain(out.models[i], domain, model); !s.ok())
+      return s;
+    if (lowerStretch)
+      if (Status s = parameterizePatches(model.net, domain, model.parameterization, options); !s.ok())
+        return s;
+    if (Status s = out.surfaces[i].build(model.net, domain, model.parameterization); !s.ok())
+      return s;
+    out.collection.push_back(&out.surfaces[i]);
+  }
+  return {};
+}
+
 TriangleMesh remeshSurface(const SemiRegularMesh& remesh, const std::vector<Vec3>& positions)
 {
   TriangleMesh mesh;
@@ -189,18 +222,10 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
   const BaseDomain domain = test::realBaseDomain("381");
   ASSERT_GT(domain.mesh.vertexCount(), 0);
   const std::vector<std::string> names{ "381", "387", "spot" };
-  std::vector<test::LandmarkedModel> models;
-  std::vector<test::ParameterizedModel> parameterized(names.size());
-  std::vector<ParameterizedSurface> surfaces(names.size());
-  std::vector<const ParameterizedSurface*> collection;
-  for (std::size_t i = 0; i < names.size(); ++i)
-  {
-    models.push_back(test::landmarkedRealModel(names[i]));
-    const Status status = test::parameterizeOnDomain(models[i], domain, parameterized[i]);
-    ASSERT_TRUE(status.ok()) << status.message();
-    ASSERT_TRUE(surfaces[i].build(parameterized[i].net, domain, parameterized[i].parameterization).ok());
-    collection.push_back(&surfaces[i]);
-  }
+  IndexedModels indexed;
+  const Status status = indexRealModels(names, domain, false, indexed);
+  ASSERT_TRUE(status.ok()) << status.message();
+  const auto& [models, parameterized, surfaces, collection] = indexed;
   const double tolerance = 0.002;
   SemiRegularMesh adaptive, uniform;
   ASSERT_TRUE(buildAdaptiveSemiRegularMesh(domain, 6, flatnessSplitRule(collection, tolerance), adaptive).ok());
@@ -239,21 +264,10 @@ TEST(SemiRegularRemesher, AdaptiveRemeshWithLowerStretchIsWithinOnePercentOfEver
   const BaseDomain domain = test::realBaseDomain("381");
   ASSERT_GT(domain.mesh.vertexCount(), 0);
   const std::vector<std::string> names{ "381", "385", "spot" };
-  std::vector<test::LandmarkedModel> models;
-  std::vector<test::ParameterizedModel> parameterized(names.size());
-  std::vector<ParameterizedSurface> surfaces(names.size());
-  std::vector<const ParameterizedSurface*> collection;
-  PatchParameterizationOptions lowerStretch;
-  lowerStretch.lowerStretch = true;
-  for (std::size_t i = 0; i < names.size(); ++i)
-  {
-    models.push_back(test::landmarkedRealModel(names[i]));
-    ASSERT_TRUE(test::parameterizeOnDomain(models[i], domain, parameterized[i]).ok()) << names[i];
-    ASSERT_TRUE(
-      parameterizePatches(parameterized[i].net, domain, parameterized[i].parameterization, lowerStretch).ok());
-    ASSERT_TRUE(surfaces[i].build(parameterized[i].net, domain, parameterized[i].parameterization).ok());
-    collection.push_back(&surfaces[i]);
-  }
+  IndexedModels indexed;
+  const Status status = indexRealModels(names, domain, true, indexed);
+  ASSERT_TRUE(status.ok()) << status.message();
+  const auto& [models, parameterized, surfaces, collection] = indexed;
   SemiRegularMesh adaptive, uniform;
   ASSERT_TRUE(buildAdaptiveSemiRegularMesh(domain, 8, flatnessSplitRule(collection, 0.005), adaptive).ok());
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, uniform).ok());
