@@ -157,12 +157,18 @@ public:
 
   /// The largest distance measured so far.
   double largest() const { return largest_; }
+  /// A sample at the largest distance (the first one measured there).
+  const Vec3& farthest() const { return farthest_; }
 
 private:
   double measure(const Vec3& p)
   {
     const double d = to_.closest(p).distance;
-    largest_ = std::max(largest_, d);
+    if (d > largest_)
+    {
+      largest_ = d;
+      farthest_ = p;
+    }
     return d;
   }
 
@@ -202,19 +208,28 @@ private:
   const TriangleMesh& from_;
   const ClosestPointQuery& to_;
   const int steps_;
-  double largest_ = 0.0;
+  double largest_ = -infinity; // so that the first sample is the farthest so far
+  Vec3 farthest_ = Vec3::Zero();
   std::vector<double> vertexDistance_;
   std::vector<std::uint64_t> edges_; ///< Sorted undirected edges.
   std::vector<double> edgeSum_;      ///< Sum over each edge's inner points.
 };
 
-/// The largest and the area-weighted mean sample distance from `from` to `to`.
-std::array<double, 2> oneSidedDistance(const TriangleMesh& from, const TriangleMesh& to, int steps)
+/// The largest and the area-weighted mean sample distance from `from` to
+/// `to`, and a sample at the largest.
+struct OneSided
+{
+  double largest = 0.0;
+  double mean = 0.0;
+  Vec3 farthest = Vec3::Zero();
+};
+
+OneSided oneSidedDistance(const TriangleMesh& from, const TriangleMesh& to, int steps)
 {
   if (from.triangles.empty())
-    return { { 0.0, 0.0 } };
+    return {};
   if (to.triangles.empty()) // nothing to be close to; avoids 0 * inf below
-    return { { infinity, infinity } };
+    return { infinity, infinity, from.points[from.triangles[0][0]] };
   const ClosestPointQuery query(to);
   SampleDistances samples(from, query, steps);
   const double perTriangle = (steps + 1) * (steps + 2) / 2.0;
@@ -227,7 +242,7 @@ std::array<double, 2> oneSidedDistance(const TriangleMesh& from, const TriangleM
     area += a;
     plain += mean;
   }
-  return { { samples.largest(), area > 0.0 ? weighted / area : plain / from.triangleCount() } };
+  return { samples.largest(), area > 0.0 ? weighted / area : plain / from.triangleCount(), samples.farthest() };
 }
 
 } // namespace
@@ -360,13 +375,14 @@ ClosestPointQuery::Result ClosestPointQuery::closest(const Vec3& p) const
 SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, int subdivisions)
 {
   const int steps = std::max(1, subdivisions);
-  const auto ab = oneSidedDistance(a, b, steps);
-  const auto ba = oneSidedDistance(b, a, steps);
+  const OneSided ab = oneSidedDistance(a, b, steps), ba = oneSidedDistance(b, a, steps);
   SurfaceDistance result;
-  result.aToB = ab[0];
-  result.meanAToB = ab[1];
-  result.bToA = ba[0];
-  result.meanBToA = ba[1];
+  result.aToB = ab.largest;
+  result.meanAToB = ab.mean;
+  result.farthestOfA = ab.farthest;
+  result.bToA = ba.largest;
+  result.meanBToA = ba.mean;
+  result.farthestOfB = ba.farthest;
   return result;
 }
 

@@ -70,9 +70,17 @@ struct SurfaceDistance
   double bToA = 0.0;     ///< max over samples of b of the distance to a.
   double meanAToB = 0.0; ///< area-weighted mean distance of a's samples to b.
   double meanBToA = 0.0; ///< same from b to a.
+  Vec3 farthestOfA = Vec3::Zero(); ///< A sample of a at distance aToB from b.
+  Vec3 farthestOfB = Vec3::Zero(); ///< A sample of b at distance bToA from a.
 
   /// \brief The two-sided Hausdorff distance, max(aToB, bToA).
   double hausdorff() const { return std::max(aToB, bToA); }
+  /// \brief Whether the Hausdorff distance is reached at a sample of a
+  ///        (a part of a that b misses), rather than of b.
+  bool reachedOnA() const { return aToB >= bToA; }
+  /// \brief Where the Hausdorff distance is reached: `farthestOfA` or
+  ///        `farthestOfB` (see `reachedOnA()`).
+  Vec3 farthestPoint() const { return reachedOnA() ? farthestOfA : farthestOfB; }
 };
 
 /// \brief Distances between surfaces `a` and `b`, sampling each triangle at the

@@ -304,6 +304,12 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
             "hausdorff_distance": _significant(value("HausdorffDistance")),
             "hausdorff_per_diagonal": _significant(value("HausdorffDistanceRelative")),
             "mean_distance": _significant(value("MeanDistance")),
+            # Where the Hausdorff distance is reached: on the input, a part
+            # the remesh misses (a tail without a landmark at its tip).
+            "hausdorff_point": [_significant(x) for x in remesh.GetFieldData().GetArray("HausdorffPoint").GetTuple3(0)],
+            "hausdorff_point_on": "input" if value("HausdorffPointOnInput") == 1 else "remesh",
+            "hausdorff_nearest_landmark": int(value("HausdorffNearestFeature")),
+            "hausdorff_landmark_distance_per_diagonal": _significant(value("HausdorffFeatureDistanceRelative")),
             # Reported, not a failure, as for the straightener.
             "flipped_triangles": int(value("FlippedTriangles")),
             "folded_before_repair": int(value("FoldedBeforeRepair")),

@@ -110,7 +110,8 @@ def _summary(report):
 
 def _models(report):
     header = ["model", "vertices", "triangles", "net / √area, traced", "straightened", "flipped parameter triangles",
-              "Hausdorff / diagonal", "flipped remesh triangles", "seconds", "result"]
+              "Hausdorff / diagonal", "farthest point: nearest landmark (distance / diagonal)",
+              "flipped remesh triangles", "seconds", "result"]
     rows = []
     for name, model in report["models"].items():
         remesh = model.get("remesh", {})
@@ -121,11 +122,21 @@ def _models(report):
             model.get("straighten", {}).get("net_length_per_sqrt_area_after", "-"),
             model.get("straighten", {}).get("flipped_triangles", "-"),
             "-" if hausdorff is None else "%.2f %%" % (100 * hausdorff),
+            _farthest(remesh),
             remesh.get("flipped_triangles", "-"),
             "%.2f" % sum(model["seconds"].values()),
             "ok" if model.get("status") == "ok" else "failed: %s" % model.get("error", ""),
         ])
     return [Heading("Models"), Table(header, rows)]
+
+
+def _farthest(remesh):
+    """Where the Hausdorff distance is reached, as the landmark nearest to
+    it: on the input, a part the remesh misses lies past that landmark."""
+    if "hausdorff_nearest_landmark" not in remesh:
+        return "-"
+    return "%d (%.3f) on the %s" % (remesh["hausdorff_nearest_landmark"],
+                                    remesh["hausdorff_landmark_distance_per_diagonal"], remesh["hausdorff_point_on"])
 
 
 def _section(title, drawn, file, text):

@@ -235,6 +235,15 @@ void setFieldValue(vtkFieldData* fieldData, const char* name, double value)
   fieldData->AddArray(array);
 }
 
+void setFieldTuple(vtkFieldData* fieldData, const char* name, const Vec3& value)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(3);
+  array->InsertNextTuple(value.data());
+  fieldData->AddArray(array);
+}
+
 void setFieldString(vtkFieldData* fieldData, const char* name, const std::string& value)
 {
   auto array = vtkSmartPointer<vtkStringArray>::New();

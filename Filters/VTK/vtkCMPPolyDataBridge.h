@@ -87,6 +87,10 @@ std::vector<int> fileToMeshPointMap(vtkPolyData* surface);
 /// \brief Adds (or replaces) a one-value double array in field data.
 void setFieldValue(vtkFieldData* fieldData, const char* name, double value);
 
+/// \brief Adds (or replaces) a one-tuple, three-component double array in
+///        field data (a point or a vector).
+void setFieldTuple(vtkFieldData* fieldData, const char* name, const Vec3& value);
+
 /// \brief Adds (or replaces) a one-value string array in field data.
 void setFieldString(vtkFieldData* fieldData, const char* name, const std::string& value);
 

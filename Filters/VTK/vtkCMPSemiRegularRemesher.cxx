@@ -32,6 +32,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -212,6 +213,26 @@ RemeshQuality measureQuality(const cmp::SemiRegularMesh& remesh, const std::vect
   return quality;
 }
 
+/// The base vertex whose landmark lies nearest to `point` (straight-line
+/// distance in `distance`), -1 if the net has none.
+int nearestLandmark(const cmp::TracedNet& net, const cmp::Vec3& point, double& distance)
+{
+  int nearest = -1;
+  distance = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < net.landmarkVertex.size(); ++b)
+  {
+    if (net.landmarkVertex[b] < 0)
+      continue;
+    const double d = (net.mesh.point(net.landmarkVertex[b]) - point).norm();
+    if (d < distance)
+    {
+      distance = d;
+      nearest = static_cast<int>(b);
+    }
+  }
+  return nearest;
+}
+
 /// The filter's work on one model, in two steps: `prepare()` rebuilds the
 /// layout and its map (every model is prepared before the shared
 /// connectivity is built, because adaptive refinement asks all of them),
@@ -221,7 +242,8 @@ class ModelRemesher
 {
 public:
   ModelRemesher(const cmp::BaseDomain& domain, vtkPolyData* input)
-    : input_(domain, input)
+    : domain_(domain)
+    , input_(domain, input)
   {
   }
   ModelRemesher(const ModelRemesher&) = delete;
@@ -305,6 +327,7 @@ public:
       cmp::bridge::setFieldValue(field, "HausdorffDistance", hausdorff);
       cmp::bridge::setFieldValue(field, "HausdorffDistanceRelative", diagonal > 0.0 ? hausdorff / diagonal : 0.0);
       cmp::bridge::setFieldValue(field, "MeanDistance", 0.5 * (distance.meanAToB + distance.meanBToA));
+      setFarthestPoint(field, distance, diagonal);
       cmp::bridge::setFieldValue(field, "DistanceSeconds", secondsSince(distanceStart));
     }
     cmp::bridge::setFieldValue(field, "TotalSeconds", rebuildSeconds_ + secondsSince(placementStart));
@@ -314,6 +337,22 @@ public:
   }
 
 private:
+  /// Where the Hausdorff distance is reached, and the landmark nearest to
+  /// it: a part without a landmark that the remesh misses (a tail's tip)
+  /// shows up here, and a landmark there is the cure.
+  void setFarthestPoint(vtkFieldData* field, const cmp::SurfaceDistance& distance, double diagonal) const
+  {
+    const cmp::Vec3 farthest = distance.farthestPoint();
+    cmp::bridge::setFieldTuple(field, "HausdorffPoint", farthest);
+    cmp::bridge::setFieldValue(field, "HausdorffPointOnInput", distance.reachedOnA() ? 1.0 : 0.0);
+    double landmarkDistance = 0.0;
+    const int base = nearestLandmark(input_.net(), farthest, landmarkDistance);
+    cmp::bridge::setFieldValue(field, "HausdorffNearestFeature", base >= 0 ? domain_.featureIds[base] : -1.0);
+    cmp::bridge::setFieldValue(
+      field, "HausdorffFeatureDistanceRelative", base >= 0 && diagonal > 0.0 ? landmarkDistance / diagonal : 0.0);
+  }
+
+  const cmp::BaseDomain& domain_;
   cmp::bridge::ParameterizedInput input_;
   double rebuildSeconds_ = 0.0;
 };

@@ -216,6 +216,27 @@ TEST(SurfaceDistance, SphereScaledByOnePointOneIsOneTenthAway)
             << d.meanAToB << " and " << d.meanBToA << " (tessellation bound " << tessellation << ")\n";
 }
 
+TEST(SurfaceDistance, SaysWhereTheHausdorffDistanceIsReached)
+{
+  // A spike the sphere misses: the distance is reached at its tip, on a.
+  const TriangleMesh sphere = test::sphere(4);
+  TriangleMesh spiked = sphere;
+  const int tip = 7;
+  spiked.points[tip] *= 1.5;
+  const SurfaceDistance d = surfaceDistance(spiked, sphere);
+  EXPECT_TRUE(d.reachedOnA());
+  EXPECT_EQ(d.farthestOfA, spiked.points[tip]);
+  EXPECT_EQ(d.farthestPoint(), spiked.points[tip]);
+  EXPECT_NEAR(d.aToB, 0.5, 0.01);
+  // Each farthest sample is as far from the other surface as its side says.
+  EXPECT_DOUBLE_EQ(ClosestPointQuery(sphere).closest(d.farthestOfA).distance, d.aToB);
+  EXPECT_DOUBLE_EQ(ClosestPointQuery(spiked).closest(d.farthestOfB).distance, d.bToA);
+  // The other way round the spike is a part of b that a misses.
+  const SurfaceDistance back = surfaceDistance(sphere, spiked);
+  EXPECT_FALSE(back.reachedOnA());
+  EXPECT_EQ(back.farthestPoint(), spiked.points[tip]);
+}
+
 TEST(SurfaceDistance, MeshAgainstItselfIsZero)
 {
   const TriangleMesh mesh = test::bumpySphere(3);

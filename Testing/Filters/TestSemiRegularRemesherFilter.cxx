@@ -19,7 +19,9 @@
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkIntArray.h>
+#include <vtkMath.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
@@ -192,6 +194,47 @@ void expectConnectivityOnL0(vtkPolyData* connectivity, vtkPolyData* l0, int leve
   }
 }
 
+/// The field arrays that say where the Hausdorff distance is reached: a
+/// point that far from the other surface, and the landmark nearest to it
+/// (remesh vertex f < F is landmark f).
+void expectHausdorffPointWhereItIs(
+  vtkPolyData* remesh, vtkPolyData* original, double hausdorff, vtkIdType features, const std::string& what)
+{
+  vtkDataArray* farthest = remesh->GetFieldData()->GetArray("HausdorffPoint");
+  ASSERT_NE(farthest, nullptr) << what;
+  ASSERT_EQ(farthest->GetNumberOfComponents(), 3) << what;
+  double point[3];
+  farthest->GetTuple(0, point);
+  const double onInput = fieldValue(remesh, "HausdorffPointOnInput");
+  ASSERT_TRUE(onInput == 0.0 || onInput == 1.0) << what;
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(onInput == 1.0 ? remesh : original);
+  locator->BuildLocator();
+  double closest[3], squared = 0.0;
+  vtkIdType cell = -1;
+  int subId = 0;
+  locator->FindClosestPoint(point, closest, cell, subId, squared);
+  const double diagonal = diagonalOf(original);
+  EXPECT_NEAR(std::sqrt(squared), hausdorff, 1e-9 * diagonal) << what;
+
+  vtkDataArray* featureIds = remesh->GetPointData()->GetArray("FeatureId");
+  ASSERT_NE(featureIds, nullptr) << what;
+  double nearest = std::numeric_limits<double>::infinity(), nearestFeature = -1.0;
+  for (vtkIdType f = 0; f < features; ++f)
+  {
+    double landmark[3];
+    remesh->GetPoint(f, landmark);
+    const double d = std::sqrt(vtkMath::Distance2BetweenPoints(point, landmark));
+    if (d < nearest)
+    {
+      nearest = d;
+      nearestFeature = featureIds->GetTuple1(f);
+    }
+  }
+  EXPECT_EQ(fieldValue(remesh, "HausdorffNearestFeature"), nearestFeature) << what;
+  EXPECT_NEAR(fieldValue(remesh, "HausdorffFeatureDistanceRelative"), nearest / diagonal, 1e-9) << what;
+}
+
 /// Checks one model's remesh against the landmarked `original` it was made
 /// from (with the probe arrays) and `input` (the remesher's input).
 void expectRemeshed(vtkPolyData* remesh, vtkPolyData* original, vtkPolyData* input, vtkPolyData* l0, int level,
@@ -228,6 +271,7 @@ void expectRemeshed(vtkPolyData* remesh, vtkPolyData* original, vtkPolyData* inp
   EXPECT_LT(fieldValue(remesh, "HausdorffDistanceRelative"), 0.1) << what;
   EXPECT_GT(fieldValue(remesh, "MeanDistance"), 0.0) << what;
   EXPECT_LT(fieldValue(remesh, "MeanDistance"), hausdorff) << what;
+  expectHausdorffPointWhereItIs(remesh, original, hausdorff, features, what);
 
   vtkPointData* points = remesh->GetPointData();
   vtkDataArray* featureIds = points->GetArray("FeatureId");

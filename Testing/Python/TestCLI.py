@@ -18,6 +18,7 @@ unset and checks that the pictures are skipped and said to be.
 import argparse
 import csv
 import json
+import math
 import os
 import re
 import shutil
@@ -218,8 +219,9 @@ def check_straightened(out, name, model, landmarks=21, flips_allowed=False):
 
 
 REMESH_KEYS = ("level", "vertices", "triangles", "hausdorff_distance", "hausdorff_per_diagonal", "mean_distance",
-               "flipped_triangles", "folded_before_repair", "repaired_vertices", "min_angle_degrees",
-               "mean_shape_quality", "seconds")
+               "hausdorff_point", "hausdorff_point_on", "hausdorff_nearest_landmark",
+               "hausdorff_landmark_distance_per_diagonal", "flipped_triangles", "folded_before_repair",
+               "repaired_vertices", "min_angle_degrees", "mean_shape_quality", "seconds")
 
 
 def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0):
@@ -297,6 +299,17 @@ def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0
             written = field.GetArray(array).GetValue(0)
             check(abs(figures[key] - written) <= 1e-5 * written, "%s: %s %r, the remesh says %r"
                   % (name, key, figures[key], written))
+        # Where the distance is reached: the report's point is the remesh's,
+        # and the nearest landmark is the nearest of the remesh's first
+        # vertices (vertex f is landmark f).
+        point = field.GetArray("HausdorffPoint").GetTuple3(0)
+        check(all(abs(a - b) <= 1e-5 * max(1.0, abs(b)) for a, b in zip(figures["hausdorff_point"], point)),
+              "%s: hausdorff_point %r, the remesh says %r" % (name, figures["hausdorff_point"], point))
+        check(figures["hausdorff_point_on"] in ("input", "remesh"), name + ": hausdorff_point_on")
+        distances = [math.dist(point, remesh.GetPoint(f)) for f in range(landmarks)]
+        nearest = min(range(landmarks), key=lambda f: distances[f])
+        feature = remesh.GetPointData().GetArray("FeatureId").GetValue(nearest)
+        check_equal(figures["hausdorff_nearest_landmark"], feature, name + ": hausdorff_nearest_landmark")
         # Vertex f sits on landmark f of the parameterized surface.
         points = points_of(remesh)
         parameterized = read_vtp(os.path.join(out, name + ".param.vtp"))
