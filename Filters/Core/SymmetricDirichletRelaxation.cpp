@@ -51,6 +51,14 @@ Eigen::Matrix2d jacobian(const Triangle& tri, const Eigen::Matrix<double, 2, 3>&
   return corners * gradient.transpose();
 }
 
+/// How much of `before` the energy `after` saves. An energy that overflowed
+/// (a triangle crushed below double precision) counts any finite one as a
+/// full gain.
+double relativeGain(double before, double after)
+{
+  return std::isfinite(before) ? (before - after) / before : 1.0;
+}
+
 /// Largest |log| of a singular value: how far, as a scale factor in either
 /// direction, a differential is from a rotation.
 double logDistortion(const Eigen::Matrix2d& J)
@@ -140,9 +148,7 @@ public:
       const double trialEnergy = this->energy(trial);
       if (trialEnergy < energy)
       {
-        // An energy that overflowed (a triangle crushed below double
-        // precision) counts any finite one as a full gain.
-        const double gain = std::isfinite(energy) ? (energy - trialEnergy) / energy : 1.0;
+        const double gain = relativeGain(energy, trialEnergy);
         plane.swap(trial);
         energy = trialEnergy;
         return gain;
@@ -282,13 +288,12 @@ void relaxProgressively(Relaxation& relaxation, const SymmetricDirichletOptions&
   double& energy, SymmetricDirichletReport& done)
 {
   const double stepDistortion = std::log(options.progressiveStepDistortion);
-  if (!(stepDistortion > 0.0) || !(relaxation.largestDistortion(plane) > std::log(options.progressiveAbove)))
+  double distortion = relaxation.largestDistortion(plane);
+  if (!(stepDistortion > 0.0) || !(distortion > std::log(options.progressiveAbove)))
     return;
-  while (done.iterations < options.maximumIterations)
+  for (; done.iterations < options.maximumIterations && distortion > stepDistortion;
+       distortion = relaxation.largestDistortion(plane))
   {
-    const double distortion = relaxation.largestDistortion(plane);
-    if (!(distortion > stepDistortion))
-      break;
     const Eigen::MatrixXd before = plane;
     relaxation.measureAgainstIntermediateShapes(plane, 1.0 - stepDistortion / distortion);
     double referenceEnergy = relaxation.energy(plane);
@@ -302,7 +307,7 @@ void relaxProgressively(Relaxation& relaxation, const SymmetricDirichletOptions&
       plane = before;
       break;
     }
-    const double gain = std::isfinite(energy) ? (energy - after) / energy : 1.0;
+    const double gain = relativeGain(energy, after);
     energy = after;
     ++done.iterations;
     ++done.progressiveIterations;

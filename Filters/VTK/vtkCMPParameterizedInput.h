@@ -60,6 +60,8 @@ public:
   const std::vector<int>& patchIds() const { return patchIds_; }
   /// \brief The input polydata.
   vtkPolyData* input() const { return input_; }
+  /// \brief The base domain the input is parameterized on.
+  const BaseDomain& domain() const { return domain_; }
 
 private:
   const BaseDomain& domain_;

@@ -242,8 +242,7 @@ class ModelRemesher
 {
 public:
   ModelRemesher(const cmp::BaseDomain& domain, vtkPolyData* input)
-    : domain_(domain)
-    , input_(domain, input)
+    : input_(domain, input)
   {
   }
   ModelRemesher(const ModelRemesher&) = delete;
@@ -347,12 +346,11 @@ private:
     cmp::bridge::setFieldValue(field, "HausdorffPointOnInput", distance.reachedOnA() ? 1.0 : 0.0);
     double landmarkDistance = 0.0;
     const int base = nearestLandmark(input_.net(), farthest, landmarkDistance);
-    cmp::bridge::setFieldValue(field, "HausdorffNearestFeature", base >= 0 ? domain_.featureIds[base] : -1.0);
+    cmp::bridge::setFieldValue(field, "HausdorffNearestFeature", base >= 0 ? input_.domain().featureIds[base] : -1.0);
     cmp::bridge::setFieldValue(
       field, "HausdorffFeatureDistanceRelative", base >= 0 && diagonal > 0.0 ? landmarkDistance / diagonal : 0.0);
   }
 
-  const cmp::BaseDomain& domain_;
   cmp::bridge::ParameterizedInput input_;
   double rebuildSeconds_ = 0.0;
 };
