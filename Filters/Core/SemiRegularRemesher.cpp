@@ -1,6 +1,9 @@
 #include "SemiRegularRemesher.h"
 
+#include "TriangleGrid.h"
+
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -364,102 +367,11 @@ Status buildAdaptiveSemiRegularMesh(
   return {};
 }
 
-namespace
-{
-
-/// Point location in one patch's parameter triangle: a uniform grid of
-/// cells, each listing the surface triangles whose image's box meets it.
-class PatchGrid
-{
-public:
-  void build(const std::vector<int>& triangles, const std::vector<std::array<Vec2, 3>>& corners)
-  {
-    triangles_ = &triangles;
-    corners_ = &corners;
-    size_ = std::max(1, static_cast<int>(std::sqrt(0.5 * static_cast<double>(triangles.size()))));
-    start_.assign(static_cast<std::size_t>(size_) * size_ + 1, 0);
-    forEachCell([&](int, int cell) { ++start_[cell + 1]; });
-    for (std::size_t i = 1; i < start_.size(); ++i)
-      start_[i] += start_[i - 1];
-    entries_.resize(start_.back());
-    std::vector<int> fill(start_.begin(), start_.end() - 1);
-    forEachCell([&](int i, int cell) { entries_[fill[cell]++] = i; });
-  }
-
-  /// The triangle (index into the patch list) whose image contains `q`
-  /// best (largest smallest barycentric coordinate), with its coordinates.
-  bool locate(const Vec2& q, int& best, std::array<double, 3>& weights) const
-  {
-    double bestScore = -std::numeric_limits<double>::infinity();
-    const int cx = cellOf(q.x()), cy = cellOf(q.y());
-    for (int radius = 0; radius < size_; ++radius)
-    {
-      for (int x = std::max(0, cx - radius); x <= std::min(size_ - 1, cx + radius); ++x)
-        for (int y = std::max(0, cy - radius); y <= std::min(size_ - 1, cy + radius); ++y)
-        {
-          if (std::max(std::abs(x - cx), std::abs(y - cy)) != radius)
-            continue;
-          const int cell = x * size_ + y;
-          for (int e = start_[cell]; e < start_[cell + 1]; ++e)
-            score(entries_[e], q, bestScore, best, weights);
-        }
-      if (bestScore > -1e-9)
-        return true;
-    }
-    return best >= 0;
-  }
-
-private:
-  int cellOf(double u) const { return std::clamp(static_cast<int>(u * size_), 0, size_ - 1); }
-
-  template <class Visit>
-  void forEachCell(Visit visit) const
-  {
-    for (int i = 0; i < static_cast<int>(triangles_->size()); ++i)
-    {
-      const auto& c = (*corners_)[i];
-      const int x0 = cellOf(std::min({ c[0].x(), c[1].x(), c[2].x() }));
-      const int x1 = cellOf(std::max({ c[0].x(), c[1].x(), c[2].x() }));
-      const int y0 = cellOf(std::min({ c[0].y(), c[1].y(), c[2].y() }));
-      const int y1 = cellOf(std::max({ c[0].y(), c[1].y(), c[2].y() }));
-      for (int x = x0; x <= x1; ++x)
-        for (int y = y0; y <= y1; ++y)
-          visit(i, x * size_ + y);
-    }
-  }
-
-  void score(int i, const Vec2& q, double& bestScore, int& best, std::array<double, 3>& weights) const
-  {
-    const auto& c = (*corners_)[i];
-    const Vec2 e1 = c[1] - c[0], e2 = c[2] - c[0], d = q - c[0];
-    const double area = cross2(e1, e2);
-    if (!(area > 0.0))
-      return; // crowded to nothing: its neighbours cover the point too
-    const double w1 = cross2(d, e2) / area;
-    const double w2 = cross2(e1, d) / area;
-    const double w0 = 1.0 - w1 - w2;
-    const double s = std::min({ w0, w1, w2 });
-    if (s > bestScore)
-    {
-      bestScore = s;
-      best = i;
-      weights = { w0, w1, w2 };
-    }
-  }
-
-  const std::vector<int>* triangles_ = nullptr;
-  const std::vector<std::array<Vec2, 3>>* corners_ = nullptr;
-  int size_ = 1;
-  std::vector<int> start_, entries_;
-};
-
-} // namespace
-
 struct ParameterizedSurface::Index
 {
   std::vector<std::vector<int>> trianglesOf;
   std::vector<std::vector<std::array<Vec2, 3>>> cornersOf;
-  std::vector<PatchGrid> grids;
+  std::vector<TriangleGrid> grids;
 };
 
 ParameterizedSurface::ParameterizedSurface() = default;
@@ -497,7 +409,7 @@ Status ParameterizedSurface::build(
   }
   index->grids.resize(patchCount);
   for (int p = 0; p < patchCount; ++p)
-    index->grids[p].build(index->trianglesOf[p], index->cornersOf[p]);
+    index->grids[p].build(index->cornersOf[p]);
 
   Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (int v = 0; v < mesh.vertexCount(); ++v)
@@ -534,6 +446,21 @@ Status ParameterizedSurface::locate(const BaseLocation& at, SurfaceSample& sampl
   const Triangle& tri = net_->mesh.triangle(triangle);
   sample = { { tri[0], tri[1], tri[2] }, { w[0] / sum, w[1] / sum, w[2] / sum }, triangle };
   return {};
+}
+
+void ParameterizedSurface::forEachTriangleImage(
+  const std::function<void(int, const std::array<Vec2, 3>&, double)>& visit) const
+{
+  if (!index_)
+    return;
+  for (std::size_t patch = 0; patch < index_->trianglesOf.size(); ++patch)
+    for (std::size_t i = 0; i < index_->trianglesOf[patch].size(); ++i)
+    {
+      const Triangle& tri = net_->mesh.triangle(index_->trianglesOf[patch][i]);
+      const Vec3 a = net_->mesh.point(tri[1]) - net_->mesh.point(tri[0]);
+      const Vec3 b = net_->mesh.point(tri[2]) - net_->mesh.point(tri[0]);
+      visit(static_cast<int>(patch), index_->cornersOf[patch][i], 0.5 * a.cross(b).norm());
+    }
 }
 
 Vec3 ParameterizedSurface::position(const SurfaceSample& sample) const

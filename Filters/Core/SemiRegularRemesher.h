@@ -109,6 +109,14 @@ public:
   /// \brief Length of the diagonal of the surface's bounding box.
   double boundingBoxDiagonal() const { return diagonal_; }
 
+  /// \brief True once `build()` succeeded.
+  bool built() const { return index_ != nullptr; }
+
+  /// \brief Calls `visit(patch, image, area)` for every surface triangle:
+  ///        its patch, its image's corners in barycentric coordinates
+  ///        (c1, c2) of that patch's base triangle, and its surface area.
+  void forEachTriangleImage(const std::function<void(int, const std::array<Vec2, 3>&, double)>& visit) const;
+
   ParameterizedSurface();
   ~ParameterizedSurface();
   ParameterizedSurface(ParameterizedSurface&&) noexcept;

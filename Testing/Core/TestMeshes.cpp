@@ -199,4 +199,27 @@ std::vector<std::string> landmarkedFourLeggedModels()
   return models;
 }
 
+Status indexRealModels(
+  const std::vector<std::string>& names, const BaseDomain& domain, bool lowerStretch, IndexedModels& out)
+{
+  out.parameterized.resize(names.size()); // sized once: the surfaces point into it
+  out.surfaces.resize(names.size());
+  PatchParameterizationOptions options;
+  options.lowerStretch = lowerStretch;
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    out.models.push_back(landmarkedRealModel(names[i]));
+    ParameterizedModel& model = out.parameterized[i];
+    if (Status s = parameterizeOnDomain(out.models[i], domain, model); !s.ok())
+      return s;
+    if (lowerStretch)
+      if (Status s = parameterizePatches(model.net, domain, model.parameterization, options); !s.ok())
+        return s;
+    if (Status s = out.surfaces[i].build(model.net, domain, model.parameterization); !s.ok())
+      return s;
+    out.collection.push_back(&out.surfaces[i]);
+  }
+  return {};
+}
+
 } // namespace cmp::test

@@ -85,6 +85,22 @@ struct ParameterizedModel
 /// \brief Traces, straightens and parameterizes `model` on `domain`.
 Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out);
 
+/// \brief Real models parameterized on one base domain and indexed for
+///        remeshing; `collection` is what a split rule or the sample
+///        relaxation takes.
+struct IndexedModels
+{
+  std::vector<LandmarkedModel> models;         ///< The models as read.
+  std::vector<ParameterizedModel> parameterized; ///< Their straightened nets and maps.
+  std::vector<ParameterizedSurface> surfaces;  ///< Indexed for point location.
+  std::vector<const ParameterizedSurface*> collection; ///< Pointers to `surfaces`.
+};
+
+/// \brief Reads, parameterizes (with `lowerStretch`, the straightener's
+///        option) and indexes the real models `names` on `domain`.
+Status indexRealModels(
+  const std::vector<std::string>& names, const BaseDomain& domain, bool lowerStretch, IndexedModels& out);
+
 /// \brief Paths without extension of every SHREC'07 four-legged model that
 ///        has both `.off` and `.vts` (".../381", ...), sorted.
 std::vector<std::string> landmarkedFourLeggedModels();

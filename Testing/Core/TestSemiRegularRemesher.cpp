@@ -16,6 +16,8 @@
 using namespace cmp;
 
 using test::drawnOnDomain;
+using test::IndexedModels;
+using test::indexRealModels;
 using test::octahedronDomain;
 
 TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel)
@@ -73,39 +75,6 @@ int trianglesAgainstSurface(const SemiRegularMesh& remesh, const TracedNet& net,
     flipped += normal.dot(surfaceNormal) < 0.0;
   }
   return flipped;
-}
-
-/// Real models parameterized on one base domain and indexed for remeshing;
-/// `collection` is what a split rule takes.
-struct IndexedModels
-{
-  std::vector<test::LandmarkedModel> models;
-  std::vector<test::ParameterizedModel> parameterized;
-  std::vector<ParameterizedSurface> surfaces;
-  std::vector<const ParameterizedSurface*> collection;
-};
-
-Status indexRealModels(
-  const std::vector<std::string>& names, const BaseDomain& domain, bool lowerStretch, IndexedModels& out)
-{
-  out.parameterized.resize(names.size()); // sized once: the surfaces point into it
-  out.surfaces.resize(names.size());
-  PatchParameterizationOptions options;
-  options.lowerStretch = lowerStretch;
-  for (std::size_t i = 0; i < names.size(); ++i)
-  {
-    out.models.push_back(test::landmarkedRealModel(names[i]));
-    test::ParameterizedModel& model = out.parameterized[i];
-    if (Status s = test::parameterizeOnDomain(out.models[i], domain, model); !s.ok())
-      return s;
-    if (lowerStretch)
-      if (Status s = parameterizePatches(model.net, domain, model.parameterization, options); !s.ok())
-        return s;
-    if (Status s = out.surfaces[i].build(model.net, domain, model.parameterization); !s.ok())
-      return s;
-    out.collection.push_back(&out.surfaces[i]);
-  }
-  return {};
 }
 
 TriangleMesh remeshSurface(const SemiRegularMesh& remesh, const std::vector<Vec3>& positions)

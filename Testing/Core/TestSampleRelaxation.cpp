@@ -1,0 +1,229 @@
+#include "SampleRelaxation.h"
+#include "SurfaceDistance.h"
+#include "TestMeshes.h"
+#include "ThreadCommunicator.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <mutex>
+
+using namespace cmp;
+
+namespace
+{
+
+/// Hausdorff distance of the remesh of `model` from it, over its diagonal.
+double relativeHausdorff(const SemiRegularMesh& remesh, const ParameterizedSurface& surface, const TracedNet& net)
+{
+  std::vector<SurfaceSample> samples;
+  EXPECT_TRUE(placeOnSurface(remesh, surface, samples).ok());
+  TriangleMesh input;
+  for (int v = 0; v < net.mesh.vertexCount(); ++v)
+    input.points.push_back(net.mesh.point(v));
+  for (int t = 0; t < net.mesh.triangleCount(); ++t)
+    input.triangles.push_back(net.mesh.triangle(t));
+  const TriangleMesh drawn{ samplePositions(net, samples), remesh.triangles };
+  return surfaceDistance(drawn, input).hausdorff() / surface.boundingBoxDiagonal();
+}
+
+bool strictlyInside(const BaseLocation& at)
+{
+  return std::all_of(at.coordinates.begin(), at.coordinates.end(), [](double c) { return c > 0.0; });
+}
+
+/// Remesh triangles that are not counter-clockwise in their base triangle.
+int clockwiseTriangles(const BaseDomain& domain, const SemiRegularMesh& remesh)
+{
+  int clockwise = 0;
+  for (std::size_t t = 0; t < remesh.triangles.size(); ++t)
+  {
+    Vec2 corner[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const BaseLocation& at = remesh.locations[remesh.triangles[t][k]];
+      std::array<double, 3> c{};
+      EXPECT_TRUE(coordinatesInTriangle(domain, at.triangle, at.coordinates, remesh.patchOfTriangle[t], c));
+      corner[k] = Vec2(c[1], c[2]);
+    }
+    clockwise += !(cross2(corner[1] - corner[0], corner[2] - corner[0]) > 0.0);
+  }
+  return clockwise;
+}
+
+} // namespace
+
+TEST(SampleRelaxation, ReachesFurtherIntoATailAndKeepsAValidLayout)
+{
+  // 385's tail has no landmark at its tip: with LowerStretch it takes 2% of
+  // a base triangle, which the level-5 grid samples sparsely.
+  const BaseDomain domain = test::realBaseDomain("381");
+  test::IndexedModels indexed;
+  const Status status = test::indexRealModels({ "385" }, domain, true, indexed);
+  ASSERT_TRUE(status.ok()) << status.message();
+  SemiRegularMesh uniform, relaxed;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 5, uniform).ok());
+  relaxed = uniform;
+  SampleRelaxationReport report;
+  const Status relaxing = relaxSampleLocations(domain, indexed.collection, relaxed, {}, &report);
+  ASSERT_TRUE(relaxing.ok()) << relaxing.message();
+  EXPECT_EQ(report.iterations, 4);
+  EXPECT_GT(report.movedVertices, relaxed.vertexCount() / 2);
+
+  // Only locations inside base triangles move, and they stay inside.
+  EXPECT_EQ(relaxed.triangles, uniform.triangles);
+  EXPECT_EQ(relaxed.patchOfTriangle, uniform.patchOfTriangle);
+  EXPECT_EQ(relaxed.levelOfVertex, uniform.levelOfVertex);
+  int moved = 0;
+  for (int v = 0; v < uniform.vertexCount(); ++v)
+  {
+    const BaseLocation &before = uniform.locations[v], &after = relaxed.locations[v];
+    ASSERT_EQ(after.triangle, before.triangle);
+    if (!strictlyInside(before))
+      EXPECT_EQ(after.coordinates, before.coordinates) << "vertex " << v << " on a base edge moved";
+    else
+      EXPECT_TRUE(strictlyInside(after)) << "vertex " << v << " left its base triangle";
+    moved += after.coordinates != before.coordinates;
+  }
+  EXPECT_GE(moved, report.movedVertices); // the last round's moves are among them
+  EXPECT_EQ(clockwiseTriangles(domain, relaxed), 0);
+
+  const TracedNet& net = indexed.parameterized[0].net;
+  const double before = relativeHausdorff(uniform, indexed.surfaces[0], net);
+  const double after = relativeHausdorff(relaxed, indexed.surfaces[0], net);
+  std::cout << "385: Hausdorff distance / diagonal " << before << " -> " << after << "\n";
+  EXPECT_LT(after, 0.75 * before);
+}
+
+TEST(SampleRelaxation, BringsACollectionCloserWithOneSetOfLocations)
+{
+  // Without LowerStretch (the default parameterization), on three models
+  // whose protrusions crowd in different base triangles.
+  const BaseDomain domain = test::realBaseDomain("381");
+  test::IndexedModels indexed;
+  const std::vector<std::string> names{ "381", "389", "spot" };
+  const Status status = test::indexRealModels(names, domain, false, indexed);
+  ASSERT_TRUE(status.ok()) << status.message();
+  SemiRegularMesh uniform, relaxed;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 5, uniform).ok());
+  relaxed = uniform;
+  ASSERT_TRUE(relaxSampleLocations(domain, indexed.collection, relaxed).ok());
+  EXPECT_EQ(clockwiseTriangles(domain, relaxed), 0);
+  double sumBefore = 0.0, sumAfter = 0.0;
+  for (std::size_t m = 0; m < names.size(); ++m)
+  {
+    const double before = relativeHausdorff(uniform, indexed.surfaces[m], indexed.parameterized[m].net);
+    const double after = relativeHausdorff(relaxed, indexed.surfaces[m], indexed.parameterized[m].net);
+    std::cout << names[m] << ": Hausdorff distance / diagonal " << before << " -> " << after << "\n";
+    EXPECT_LT(after, 1.05 * before) << names[m];
+    sumBefore += before;
+    sumAfter += after;
+  }
+  EXPECT_LT(sumAfter, 0.8 * sumBefore);
+}
+
+TEST(SampleRelaxation, ModelsSpreadOverRanksMoveTheLocationsAsOneProcessDoes)
+{
+  const BaseDomain domain = test::realBaseDomain("381");
+  test::IndexedModels indexed;
+  ASSERT_TRUE(test::indexRealModels({ "381", "385", "spot" }, domain, false, indexed).ok());
+  SemiRegularMesh serial;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 4, serial).ok());
+  const SemiRegularMesh start = serial;
+  ASSERT_TRUE(relaxSampleLocations(domain, indexed.collection, serial).ok());
+
+  // Rank 0 holds two models, rank 1 one; then rank 1 holds none.
+  for (const std::vector<std::vector<int>>& split :
+    { std::vector<std::vector<int>>{ { 0, 1 }, { 2 } }, std::vector<std::vector<int>>{ { 0, 1, 2 }, {} } })
+  {
+    std::vector<SemiRegularMesh> results(split.size(), start);
+    std::mutex mutex;
+    test::runOnRanks(static_cast<int>(split.size()), [&](Communicator& communicator) {
+      std::vector<const ParameterizedSurface*> local;
+      for (int m : split[communicator.rank()])
+        local.push_back(indexed.collection[m]);
+      const Status status = relaxSampleLocations(domain, local, communicator, results[communicator.rank()]);
+      const std::lock_guard<std::mutex> lock(mutex);
+      EXPECT_TRUE(status.ok()) << status.message();
+    });
+    double largest = 0.0;
+    for (int v = 0; v < serial.vertexCount(); ++v)
+    {
+      // The ranks agree bit for bit; with one process, up to the order of the sums.
+      EXPECT_EQ(results[0].locations[v].coordinates, results[1].locations[v].coordinates) << "vertex " << v;
+      for (int k = 0; k < 3; ++k)
+        largest = std::max(largest,
+          std::abs(results[0].locations[v].coordinates[k] - serial.locations[v].coordinates[k]));
+    }
+    EXPECT_LT(largest, 1e-9);
+  }
+}
+
+TEST(SampleRelaxation, ZeroRoundsLeaveTheLocationsAlone)
+{
+  const BaseDomain domain = test::realBaseDomain("381");
+  test::IndexedModels indexed;
+  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
+  SemiRegularMesh mesh, untouched;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 3, mesh).ok());
+  untouched = mesh;
+  SampleRelaxationOptions none;
+  none.iterations = 0;
+  SampleRelaxationReport report;
+  ASSERT_TRUE(relaxSampleLocations(domain, indexed.collection, mesh, none, &report).ok());
+  EXPECT_EQ(report.iterations, 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    EXPECT_EQ(mesh.locations[v].coordinates, untouched.locations[v].coordinates);
+}
+
+TEST(SampleRelaxation, BadInputIsNamedAndLeavesTheRemeshAlone)
+{
+  const BaseDomain domain = test::realBaseDomain("381");
+  test::IndexedModels indexed;
+  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
+  SemiRegularMesh mesh;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 3, mesh).ok());
+  const SemiRegularMesh untouched = mesh;
+  const auto expectError = [&](const Status& status, const std::string& words) {
+    ASSERT_FALSE(status.ok()) << "expected an error mentioning '" << words << "'";
+    EXPECT_NE(status.message().find(words), std::string::npos) << status.message();
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      ASSERT_EQ(mesh.locations[v].coordinates, untouched.locations[v].coordinates);
+  };
+  expectError(relaxSampleLocations(domain, {}, mesh), "no model");
+  const ParameterizedSurface unbuilt;
+  expectError(relaxSampleLocations(domain, { &unbuilt }, mesh), "not parameterized");
+  expectError(relaxSampleLocations(domain, { nullptr }, mesh), "missing");
+  SampleRelaxationOptions options;
+  options.iterations = -1;
+  expectError(relaxSampleLocations(domain, indexed.collection, mesh, options), "negative");
+  for (double step : { 0.0, 1.5, std::nan("") })
+  {
+    options = {};
+    options.step = step;
+    expectError(relaxSampleLocations(domain, indexed.collection, mesh, options), "step");
+  }
+  // A remesh of a larger base domain names base triangles this one lacks.
+  SemiRegularMesh foreign = mesh;
+  foreign.patchOfTriangle.back() = domain.mesh.triangleCount();
+  ASSERT_FALSE(relaxSampleLocations(domain, indexed.collection, foreign).ok());
+  EXPECT_EQ(foreign.locations[mesh.vertexCount() - 1].coordinates, untouched.locations[mesh.vertexCount() - 1].coordinates);
+
+  // Over ranks: no rank has a model, or one rank's input is bad; every rank says so.
+  for (bool badOnRankOne : { false, true })
+  {
+    std::mutex mutex;
+    test::runOnRanks(2, [&](Communicator& communicator) {
+      SemiRegularMesh copy = untouched;
+      SampleRelaxationOptions mine;
+      if (badOnRankOne && communicator.rank() == 1)
+        mine.iterations = -3;
+      const std::vector<const ParameterizedSurface*> local =
+        badOnRankOne ? indexed.collection : std::vector<const ParameterizedSurface*>{};
+      const Status status = relaxSampleLocations(domain, local, communicator, copy, mine);
+      const std::lock_guard<std::mutex> lock(mutex);
+      EXPECT_FALSE(status.ok());
+      EXPECT_NE(status.message().find(badOnRankOne ? "negative" : "no model"), std::string::npos) << status.message();
+    });
+  }
+}
