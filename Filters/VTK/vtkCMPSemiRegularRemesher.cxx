@@ -3,9 +3,11 @@
 #include "BaseDomainBuilder.h" // triangleShapeQuality
 #include "FoldRepair.h"
 #include "PatchLayout.h"
+#include "SampleRelaxation.h"
 #include "SemiRegularRemesher.h"
 #include "SurfaceDistance.h"
 #include "vtkCMPCollection.h"
+#include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPParameterizedInput.h"
 #include "vtkCMPPolyDataBridge.h"
 
@@ -20,6 +22,7 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -41,8 +44,23 @@ vtkStandardNewMacro(vtkCMPSemiRegularRemesher);
 
 vtkCMPSemiRegularRemesher::vtkCMPSemiRegularRemesher()
 {
+  this->Controller = vtkMultiProcessController::GetGlobalController();
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
+}
+
+void vtkCMPSemiRegularRemesher::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Controller != controller)
+  {
+    this->Controller = controller;
+    this->Modified();
+  }
+}
+
+vtkMultiProcessController* vtkCMPSemiRegularRemesher::GetController()
+{
+  return this->Controller;
 }
 
 int vtkCMPSemiRegularRemesher::FillInputPortInformation(int port, vtkInformation* info)
@@ -101,6 +119,15 @@ struct SharedRemesh
   vtkSmartPointer<vtkIntArray> patchIds, levels, baseTriangles, vertexLevels;
   vtkSmartPointer<vtkDoubleArray> baseCoordinates;
   std::vector<int> featureIds; ///< f at vertex f, -1 elsewhere.
+  int relaxationRounds = 0;         ///< Sample relaxation rounds made.
+  double relaxationSeconds = 0.0;   ///< Their time (the whole collection's).
+
+  /// The relaxation's figures, on every output.
+  void describeRelaxation(vtkFieldData* field) const
+  {
+    cmp::bridge::setFieldValue(field, "SampleRelaxationRounds", relaxationRounds);
+    cmp::bridge::setFieldValue(field, "SampleRelaxationSeconds", relaxationSeconds);
+  }
 
   /// Output 1: the connectivity drawn on L0.
   vtkSmartPointer<vtkPolyData> build(const cmp::BaseDomain& domain)
@@ -151,6 +178,7 @@ struct SharedRemesh
     cmp::bridge::setFieldValue(field, "RemeshLevel", mesh.level);
     cmp::bridge::setFieldValue(field, "VertexCount", vertices);
     cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(mesh.triangles.size()));
+    describeRelaxation(field);
     return connectivity;
   }
 };
@@ -313,6 +341,7 @@ public:
     cmp::bridge::setFieldValue(field, "MinimumAngle", quality.minimumAngleDegrees);
     cmp::bridge::setFieldValue(field, "MeanShapeQuality", quality.meanShapeQuality);
     cmp::bridge::setFieldValue(field, "RebuildSeconds", rebuildSeconds_);
+    shared.describeRelaxation(field);
     cmp::bridge::setFieldValue(field, "PlacementSeconds", placementSeconds);
     if (computeDistance)
     {
@@ -387,49 +416,70 @@ int vtkCMPSemiRegularRemesher::RequestData(
     return 0;
   }
 
-  // The surfaces to remesh: the input itself, or every leaf of a multiblock.
-  cmp::bridge::SurfaceCollection collection;
-  if (cmp::Status listed = cmp::bridge::collectSurfaces(input, collection); !listed.ok())
+  if (this->SampleRelaxationIterations < 0)
   {
-    vtkErrorMacro(<< listed.message());
-    output->Initialize();
+    vtkErrorMacro("SampleRelaxationIterations must be 0 (none) or a positive number of rounds (it is "
+      << this->SampleRelaxationIterations << ")");
     return 0;
   }
-  std::vector<std::unique_ptr<ModelRemesher>> models;
-  for (vtkPolyData* surface : collection.surfaces)
-    models.push_back(std::make_unique<ModelRemesher>(domain, surface));
-  const std::vector<std::string>& names = collection.labels;
-
+  // Relaxation sums over every rank's models: from here on, a rank that
+  // fails must say so to the others instead of leaving them waiting.
+  const bool relax = this->SampleRelaxationIterations > 0;
+  cmp::bridge::ControllerCommunicator communicator(this->Controller);
   const auto fail = [&](const std::string& message)
   {
     vtkErrorMacro(<< message);
     output->Initialize();
     return 0;
   };
-  const double modelCount = static_cast<double>(models.size());
-  for (std::size_t m = 0; m < models.size(); ++m)
+
+  // The surfaces to remesh: the input itself, or every leaf of a multiblock.
+  cmp::bridge::SurfaceCollection collection;
+  cmp::Status local = cmp::bridge::collectSurfaces(input, collection, /*allowEmpty=*/relax && communicator.size() > 1);
+  std::vector<std::unique_ptr<ModelRemesher>> models;
+  if (local.ok())
+    for (vtkPolyData* surface : collection.surfaces)
+      models.push_back(std::make_unique<ModelRemesher>(domain, surface));
+  const std::vector<std::string>& names = collection.labels;
+  const double modelCount = std::max<double>(1.0, static_cast<double>(models.size()));
+  for (std::size_t m = 0; m < models.size() && local.ok(); ++m)
   {
     if (cmp::Status status = models[m]->prepare(); !status.ok())
-      return fail(names[m] + status.message());
+      local = cmp::Status::error(names[m] + status.message());
     this->UpdateProgress(0.3 * (m + 1) / modelCount);
   }
+  if (relax)
+    local = cmp::agreeOnStatus(local, communicator);
+  if (!local.ok())
+    return fail(local.message());
+  std::vector<const cmp::ParameterizedSurface*> surfaces;
+  for (const auto& model : models)
+    surfaces.push_back(&model->surface());
 
   // One connectivity for the whole collection: with a tolerance, a triangle
   // is split when any model needs it.
   SharedRemesh shared;
   cmp::Status status;
   if (this->AdaptiveTolerance > 0.0)
-  {
-    std::vector<const cmp::ParameterizedSurface*> surfaces;
-    for (const auto& model : models)
-      surfaces.push_back(&model->surface());
     status = cmp::buildAdaptiveSemiRegularMesh(
       domain, this->Level, cmp::flatnessSplitRule(surfaces, this->AdaptiveTolerance), shared.mesh);
-  }
   else
     status = cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
   if (!status.ok())
     return fail(status.message());
+  if (relax)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    cmp::SampleRelaxationOptions options;
+    options.iterations = this->SampleRelaxationIterations;
+    cmp::SampleRelaxationReport report;
+    if (cmp::Status relaxed =
+          cmp::relaxSampleLocations(domain, surfaces, communicator, shared.mesh, options, &report);
+        !relaxed.ok())
+      return fail("sample relaxation: " + relaxed.message());
+    shared.relaxationRounds = report.iterations;
+    shared.relaxationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   vtkSmartPointer<vtkPolyData> connectivity = shared.build(domain);
   this->UpdateProgress(0.4);
 
@@ -456,4 +506,6 @@ void vtkCMPSemiRegularRemesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AdaptiveTolerance: " << this->AdaptiveTolerance << "\n";
   os << indent << "ComputeDistance: " << this->ComputeDistance << "\n";
   os << indent << "RepairFolds: " << this->RepairFolds << "\n";
+  os << indent << "SampleRelaxationIterations: " << this->SampleRelaxationIterations << "\n";
+  os << indent << "Controller: " << this->Controller.Get() << "\n";
 }

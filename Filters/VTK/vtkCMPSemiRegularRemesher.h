@@ -6,8 +6,10 @@
 #include "CMPFiltersModule.h"
 
 #include <vtkDataObjectAlgorithm.h>
+#include <vtkSmartPointer.h>
 
 class vtkMultiBlockDataSet;
+class vtkMultiProcessController;
 class vtkPolyData;
 
 /// \brief Remeshes every model of a collection with the same connectivity:
@@ -34,8 +36,8 @@ class vtkPolyData;
 /// facing against the surface, the ones `FlippedTriangles` counts). Field arrays: `RemeshLevel`,
 /// `VertexCount`, `TriangleCount`, `FlippedTriangles` (after repair),
 /// `FoldedBeforeRepair`, `RepairedVertices`, `MinimumAngle`,
-/// `MeanShapeQuality`, timings (`RebuildSeconds`, `PlacementSeconds`,
-/// `TotalSeconds`) and, with ComputeDistance, the distances to the input
+/// `MeanShapeQuality`, `SampleRelaxationRounds`, timings (`RebuildSeconds`,
+/// `SampleRelaxationSeconds`, `PlacementSeconds`, `TotalSeconds`) and, with ComputeDistance, the distances to the input
 /// (`HausdorffDistance`, `HausdorffDistanceRelative`, `MeanDistance`,
 /// `DistanceSeconds`).
 /// Output 1: the connectivity once, drawn on `L0` (every vertex at its base
@@ -72,6 +74,31 @@ public:
   vtkSetMacro(AdaptiveTolerance, double);
   /// \brief Adaptive refinement tolerance (0: uniform).
   vtkGetMacro(AdaptiveTolerance, double);
+
+  /// \brief Rounds of sample relaxation (default 0: every vertex at its
+  ///        quadrisection place). Each round moves every vertex inside an
+  ///        `L0` triangle towards the centroid of the surface area its
+  ///        triangles cover, weighted by area density and summed over all
+  ///        models of the input, so that samples gather where some model's
+  ///        parameterization crowds (tails, ears). One set of base
+  ///        locations for the whole collection: the connectivity and the
+  ///        vertex correspondence stay shared, but the locations depend on
+  ///        every model given, so remesh the whole collection in one run
+  ///        (under MPI, every rank's models count). 4 rounds cut the summed
+  ///        Hausdorff distance of the SHREC'07 quadrupeds at level 5 by 29%
+  ///        (12% with the straightener's LowerStretch). Negative values are
+  ///        reported when the filter runs.
+  vtkSetMacro(SampleRelaxationIterations, int);
+  /// \brief Rounds of sample relaxation (0: none).
+  vtkGetMacro(SampleRelaxationIterations, int);
+
+  /// \brief The processes that share the collection for sample relaxation
+  ///        (default: the global controller; a vtkDummyController makes this
+  ///        process work alone). Not used while SampleRelaxationIterations
+  ///        is 0.
+  void SetController(vtkMultiProcessController* controller);
+  /// \brief The processes that share the collection.
+  vtkMultiProcessController* GetController();
 
   /// \brief Measure how far each remesh is from its input (default on):
   ///        field arrays `HausdorffDistance`, `HausdorffDistanceRelative`
@@ -115,4 +142,6 @@ private:
   double AdaptiveTolerance = 0.0;
   bool ComputeDistance = true;
   bool RepairFolds = true;
+  int SampleRelaxationIterations = 0;
+  vtkSmartPointer<vtkMultiProcessController> Controller;
 };

@@ -1,12 +1,14 @@
-"""Mesh PCA, Shape Blend and Wavelet Detail Transfer spread over the ranks
-of `mpirun -np N pvbatch`: every rank builds the same straightened
-collection (the shipped examples plus two deformed copies), rank 0 writes it
-as a .vtm, and each rank reads only its share of the blocks (the XML
-multiblock reader splits them by piece) and remeshes them at level 3. The
-filters then combine across ranks; their mean, modes, coefficients, blend
-and detail transfer (its two models held by different ranks) must equal a
-one-process run (a vtkDummyController) on the whole collection remeshed at
-once, to round-off.
+"""Mesh PCA, Shape Blend, Wavelet Detail Transfer and the Semi-Regular
+Remesher's sample relaxation spread over the ranks of `mpirun -np N
+pvbatch`: every rank builds the same straightened collection (the shipped
+examples plus two deformed copies), rank 0 writes it as a .vtm, and each
+rank reads only its share of the blocks (the XML multiblock reader splits
+them by piece) and remeshes them at level 3. The filters then combine
+across ranks; their mean, modes, coefficients, blend and detail transfer
+(its two models held by different ranks) must equal a one-process run (a
+vtkDummyController) on the whole collection remeshed at once, to round-off.
+So must the base locations that sample relaxation gives each rank's share:
+it sums the surface area of every rank's models.
 
   mpirun -np 2 pvbatch TestParallelPCA.py OUTPUT_FOLDER     (PYTHONPATH: the consistent_mesh package)
 """
@@ -77,15 +79,36 @@ def parameterized_collection():
     return blocks, domain
 
 
-def remeshed(blocks, domain):
+def remeshed(blocks, domain, relaxation_rounds=0, controller=None):
     """The blocks remeshed at level 3 (uniform: the connectivity depends on
-    L0 and the level only, so ranks remeshing their own blocks agree)."""
+    L0 and the level only, so ranks remeshing their own blocks agree), and
+    the connectivity output. With relaxation_rounds, the base locations
+    depend on the models of every rank of `controller`."""
     remesher = cmp.vtkCMPSemiRegularRemesher()
     remesher.SetInputData(0, blocks)
     remesher.SetInputData(1, domain)
     remesher.SetLevel(3)
     remesher.ComputeDistanceOff()
-    return run(remesher)
+    remesher.SetSampleRelaxationIterations(relaxation_rounds)
+    if controller is not None:
+        remesher.SetController(controller)
+    collection = run(remesher)
+    return collection, remesher.GetOutputDataObject(1)
+
+
+def check_relaxation_across_ranks(share, blocks, domain, controller):
+    """Relaxed base locations of this rank's share equal those of the whole
+    collection relaxed in one process."""
+    _, spread = remeshed(share, domain, 4, controller)
+    _, alone = remeshed(blocks, domain, 4, vtkDummyController())
+    _, plain = remeshed(blocks, domain)
+    locations = [vtk_to_numpy(c.GetPointData().GetArray("BaseCoordinates")) for c in (spread, alone, plain)]
+    difference = numpy.abs(locations[0] - locations[1]).max()
+    check(difference <= 1e-9, "relaxed base locations differ from one process by %g" % difference)
+    moved = int((numpy.abs(locations[1] - locations[2]).max(axis=1) > 0).sum())
+    check(moved > locations[2].shape[0] // 2, "relaxation moved only %d of %d vertices" % (moved, len(locations[2])))
+    check_equal(int(spread.GetFieldData().GetArray("SampleRelaxationRounds").GetValue(0)), 4, "relaxation rounds")
+    return moved
 
 
 def analyse(collection, controller, weights):
@@ -133,7 +156,7 @@ def main():
     folder = sys.argv[1]
     path = os.path.join(folder, "collection.vtm")
     blocks, domain = parameterized_collection()
-    collection = remeshed(blocks, domain)
+    collection, _ = remeshed(blocks, domain)
     if rank == 0:
         os.makedirs(folder, exist_ok=True)
         writer = vtkXMLMultiBlockDataWriter()
@@ -147,7 +170,7 @@ def main():
     reader.SetFileName(path)
     reader.UpdatePiece(rank, ranks, 0)
     # Each rank remeshes only the straightened models it holds.
-    share = remeshed(reader.GetOutput(), domain)
+    share, _ = remeshed(reader.GetOutput(), domain)
     held = sum(1 for b in range(share.GetNumberOfBlocks()) if share.GetBlock(b) is not None)
     mine, all_counts = vtkIntArray(), vtkIntArray()
     mine.InsertNextValue(held)
@@ -155,6 +178,8 @@ def main():
     counts = [all_counts.GetValue(r) for r in range(ranks)]
     check_equal(sum(counts), 5, "blocks over all ranks")
     check(max(counts) < 5, "one rank holds every block: the test would not test anything (%r)" % counts)
+
+    moved = check_relaxation_across_ranks(reader.GetOutput(), blocks, domain, controller)
 
     weights = [0.4, 0.3, 0.2, 0.3, -0.2]
     spread = analyse(share, controller, weights)
@@ -173,8 +198,8 @@ def main():
         difference = numpy.abs(a - b).max()
         check(difference <= 1e-9 * scale, "%s differs from one process by %g" % (what, difference))
     print("%d ranks holding %r blocks: mean, %d modes, coefficients, blend and detail transfer equal "
-          "to one process"
-          % (ranks, counts, len(alone["modes"])))
+          "to one process; sample relaxation moved %d base locations, as one process does"
+          % (ranks, counts, len(alone["modes"]), moved))
 
 
 if __name__ == "__main__":

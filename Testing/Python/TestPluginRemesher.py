@@ -83,7 +83,8 @@ def main():
     tracer = names["FeatureNetTracer"](Input=group, BaseDomain=base)
     straightener = names["NetStraightener"](Input=tracer, BaseDomain=base)
     remesher = names["SemiRegularRemesher"](Input=straightener, BaseDomain=base)
-    check_equal((remesher.Level, remesher.ComputeDistance, remesher.RepairFolds), (4, 1, 1), "defaults")
+    check_equal((remesher.Level, remesher.ComputeDistance, remesher.RepairFolds, remesher.SampleRelaxationIterations),
+                (4, 1, 1, 0), "defaults")
     check_equal([remesher.SMProxy.GetOutputPortName(i) for i in range(2)], ["Remesh", "Connectivity"],
                 "output port names")
     remesher.Level = LEVEL
@@ -164,6 +165,30 @@ def main():
     check(any(field(remeshes.GetBlock(b), "RepairedVertices") > 0 for b in range(2)), "no vertex repaired")
     remesher.RepairFolds = 1
 
+    # Sample relaxation: the same connectivity, base locations moved alike
+    # for both models (the connectivity output carries them), closer to the
+    # models.
+    remesher.SampleRelaxationIterations = 4
+    remesher.UpdatePipeline()
+    relaxed = servermanager.Fetch(remesher, idx=0)
+    relaxed_connectivity = servermanager.Fetch(remesher, idx=1)
+    remesher.SampleRelaxationIterations = 0
+    for mine, theirs, part in zip(connectivity_of(first), connectivity_of(relaxed.GetBlock(1)), ("offsets", "connectivity")):
+        check(numpy.array_equal(mine, theirs), "relaxed: %s differ" % part)
+    locations = vtk_to_numpy(relaxed_connectivity.GetPointData().GetArray("BaseCoordinates"))
+    before = vtk_to_numpy(connectivity.GetPointData().GetArray("BaseCoordinates"))
+    for block in range(2):
+        check(numpy.array_equal(vtk_to_numpy(relaxed.GetBlock(block).GetPointData().GetArray("BaseCoordinates")),
+                                locations), "relaxed block %d: BaseCoordinates are not the shared ones" % block)
+    moved = int(numpy.any(locations != before, axis=1).sum())
+    check(moved > len(before) // 2, "relaxation moved only %d of %d base locations" % (moved, len(before)))
+    distances = [(field(remeshes.GetBlock(b), "HausdorffDistanceRelative"),
+                  field(relaxed.GetBlock(b), "HausdorffDistanceRelative")) for b in range(2)]
+    check(sum(d[1] for d in distances) < sum(d[0] for d in distances),
+          "relaxation did not bring the remeshes closer: %r" % distances)
+    print("sample relaxation (4 rounds): %d base locations moved, Hausdorff / diagonal %s"
+          % (moved, ", ".join("%.4f -> %.4f" % d for d in distances)))
+
     # Bad input: reported by the filter, no output.
     def expect_failure(proxy, fragment, what):
         with ErrorCapture(proxy.GetClientSideObject()) as errors:
@@ -176,6 +201,10 @@ def main():
     remesher.Level = 9
     expect_failure(remesher, "Level must be between 0 and 8 (it is 9)", "Level 9")
     remesher.Level = LEVEL
+    remesher.SampleRelaxationIterations = -2
+    expect_failure(remesher, "SampleRelaxationIterations must be 0 (none) or a positive number of rounds (it is -2)",
+                   "SampleRelaxationIterations -2")
+    remesher.SampleRelaxationIterations = 0
     unstraightened = names["SemiRegularRemesher"](Input=tracer, BaseDomain=base)
     expect_failure(unstraightened, "input has no BaseTriangle point array: run Net Straightener first",
                    "traced, not straightened")
