@@ -24,7 +24,7 @@ Usage:
   consistent-remesh [--collection FOLDER] [--output DIR] [options]
   consistent-remesh --mesh A.off --landmarks A.vts [--mesh B.obj --landmarks B.pinned ...]
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
-                    [--adaptive-tolerance T] [--transfer-from NAME] [--details-from NAME] [--pca K]
+                    [--adaptive-tolerance T] [--relax-samples N] [--transfer-from NAME] [--details-from NAME] [--pca K]
                     [--blend] [--blend-weights W0,W1,...] [--blend-alignment MODE]
                     [--no-render] [--view-up AXIS] --output DIR
 
@@ -64,6 +64,7 @@ EXIT_NO_BASE_DOMAIN = 3
 EXIT_NO_COLLECTION = 4
 DEFAULT_LEVEL = 4
 MAX_LEVEL = 8
+MAX_SAMPLE_RELAXATION = 32  # the plugin's range; more rounds gain nothing measurable
 # Rows of pca-modes.png: more would make the picture too large to read.
 RENDERED_MODES = 3
 BLEND_GRID_STEPS = 4
@@ -266,11 +267,13 @@ def _significant(value, digits=6):
     return float("%.*g" % (digits, value))
 
 
-def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, repair_folds=True):
+def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, repair_folds=True,
+                      sample_relaxation=0):
     """SemiRegularRemesher on every straightened model at once (a multiblock
     with one block per model, named after it), so that they all get the same
-    connectivity, adaptive refinement included; repair_folds is the filter's
-    RepairFolds. Writes NAME.remesh.vtp per
+    connectivity and base locations, adaptive refinement and sample
+    relaxation included; repair_folds is the filter's RepairFolds and
+    sample_relaxation its SampleRelaxationIterations. Writes NAME.remesh.vtp per
     model, collection.vtm (all of them) and remesh_connectivity.vtp (the
     connectivity on L0); fills each model's "remesh" figures and returns the
     collection's (size, time). Raises StageError if the filter fails or a
@@ -286,6 +289,7 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
     remesher.SetAdaptiveTolerance(adaptive_tolerance)
     remesher.ComputeDistanceOn()
     remesher.SetRepairFolds(repair_folds)
+    remesher.SetSampleRelaxationIterations(sample_relaxation)
     start = time.perf_counter()
     remeshes = _run(remesher)
     seconds = time.perf_counter() - start
@@ -326,9 +330,12 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
     for model, model_figures in zip(models, figures):
         model.report["remesh"] = model_figures
         model.report["seconds"]["remesh"] = model_figures["seconds"]
+    shared = _field_reader(connectivity)
     return remeshes, {
         "vertices": connectivity.GetNumberOfPoints(),
         "triangles": connectivity.GetNumberOfCells(),
+        "sample_relaxation_rounds": int(shared("SampleRelaxationRounds")),
+        "sample_relaxation_seconds": round(shared("SampleRelaxationSeconds"), 4),
         "seconds": round(seconds, 4),
     }
 
@@ -851,6 +858,11 @@ def parse_arguments(argv):
                         help="refine adaptively, J being the maximum level: split a triangle while on any model the "
                         "surface is farther than T times that model's bounding-box diagonal from it (e.g. 0.002; "
                         "default 0: uniform)")
+    parser.add_argument("--relax-samples", type=int, metavar="N",
+                        help="N rounds of sample relaxation (the Semi-Regular Remesher's SampleRelaxationIterations; "
+                        "default 0, or the collection's relax_samples): remesh vertices move inside each L0 triangle towards where the models' surface "
+                        "crowds in the parameterization (tails, ears), one set of locations for the whole "
+                        "collection; 4 is a good choice")
     parser.add_argument("--lower-stretch", action="store_true",
                         help="lower the stretch of every patch's map (Net Straightener's LowerStretch): parts "
                         "without landmarks, such as ears and tails, get more remesh vertices, at the price of more "
@@ -897,6 +909,8 @@ def parse_arguments(argv):
         parser.error("the following arguments are required: --output")
     if args.level is None:
         args.level = DEFAULT_LEVEL
+    if args.relax_samples is None:
+        args.relax_samples = 0
     if args.view_up is None:
         args.view_up = "+y"
     if args.blend_alignment is None:
@@ -945,6 +959,9 @@ def parse_arguments(argv):
     if not (math.isfinite(args.adaptive_tolerance) and args.adaptive_tolerance >= 0):
         parser.error("--adaptive-tolerance %s: give 0 (uniform) or a positive fraction of each model's bounding-box "
                      "diagonal, e.g. 0.002" % args.adaptive_tolerance)
+    if not 0 <= args.relax_samples <= MAX_SAMPLE_RELAXATION:
+        parser.error("--relax-samples %d: give a number of rounds from 0 (none) to %d (4 is a good choice)"
+                     % (args.relax_samples, MAX_SAMPLE_RELAXATION))
     if os.path.exists(args.output) and not os.path.isdir(args.output):
         parser.error("--output %s exists and is not a folder" % args.output)
     return args
@@ -981,7 +998,7 @@ def use_collection(parser, args):
     if args.base_domain is None and args.base_domain_from is None:
         args.base_domain = data.base_domain
     stages = data.stages
-    for option in ("level", "pca", "transfer_from", "view_up", "blend_alignment"):
+    for option in ("level", "relax_samples", "pca", "transfer_from", "view_up", "blend_alignment"):
         if getattr(args, option) is None and stages.get(option) is not None:
             setattr(args, option, stages[option])
     args.blend = args.blend or bool(stages.get("blend"))
@@ -1103,7 +1120,7 @@ def main(argv=None):
               % (len(ready), "" if len(ready) == 1 else "s", args.level, adaptive), flush=True)
         try:
             remeshes, figures = remesh_collection(ready, domain, args.level, args.adaptive_tolerance, args.output,
-                                                   not args.no_fold_repair)
+                                                   not args.no_fold_repair, args.relax_samples)
             report["remesh"].update(figures)
             for model in ready:
                 model.report["status"] = "ok"
@@ -1175,10 +1192,14 @@ def print_summary(models, report):
         print("remesh: FAILED: %s" % remesh["error"])
     elif "vertices" in remesh:
         adaptive = " (adaptive, tolerance %g)" % remesh["adaptive_tolerance"] if remesh["adaptive_tolerance"] else ""
+        relaxed = ""
+        if remesh.get("sample_relaxation_rounds"):
+            relaxed = "; samples relaxed in %d rounds (%.3f s)" % (remesh["sample_relaxation_rounds"],
+                                                                   remesh["sample_relaxation_seconds"])
         count = len(remesh["models"])
-        print("remesh: level %d%s, %d vertices, %d triangles per model (%d model%s, %.3f s)"
+        print("remesh: level %d%s, %d vertices, %d triangles per model (%d model%s, %.3f s)%s"
               % (remesh["level"], adaptive, remesh["vertices"], remesh["triangles"], count,
-                 "" if count == 1 else "s", remesh["seconds"]))
+                 "" if count == 1 else "s", remesh["seconds"], relaxed))
     width = max(len(m.name) for m in models)
     print("%-*s  %8s  %8s  %11s  %12s  %16s  %s"
           % (width, "model", "vertices", "seconds", "net/sqrt(A)", "straightened", "Hausdorff/diag %", "result"))

@@ -12,7 +12,7 @@ collection.json:
             landmarks       landmark file, relative to the folder
             sha256          of the mesh as unpacked: a changed package is an error
   base_domain               relative to the folder
-  stages                    level, pca, blend, blend_alignment, transfer_from, view_up
+  stages                    level, relax_samples, pca, blend, blend_alignment, transfer_from, view_up
 
 The meshes are unpacked once into a cache folder ($CMP_CACHE_DIR, else
 $XDG_CACHE_HOME/consistent-mesh, else ~/.cache/consistent-mesh) and checked
@@ -154,7 +154,8 @@ class _Entries:
 
 
 _KINDS = {dict: "an object", list: "a list", str: "a string", int: "a whole number", bool: "true or false"}
-_STAGES = {"level": int, "pca": int, "blend": bool, "blend_alignment": str, "transfer_from": str, "view_up": str}
+_STAGES = {"level": int, "relax_samples": int, "pca": int, "blend": bool, "blend_alignment": str,
+           "transfer_from": str, "view_up": str}
 
 
 def _checked_stages(entry, stages, names):

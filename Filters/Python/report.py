@@ -89,6 +89,9 @@ def _summary(report):
     remesh = report.get("remesh", {})
     if "vertices" in remesh:
         adaptive = ", adaptive (tolerance %g)" % remesh["adaptive_tolerance"] if remesh["adaptive_tolerance"] else ""
+        rounds = remesh.get("sample_relaxation_rounds", 0)
+        if rounds:
+            adaptive += ", samples relaxed (%d round%s)" % (rounds, "" if rounds == 1 else "s")
         lines.append("%d of %d models remeshed with one connectivity: level %d%s, %d vertices and %d triangles "
                      "each, in %.2f s." % (len(ok), len(models), remesh["level"], adaptive, remesh["vertices"],
                                            remesh["triangles"], remesh["seconds"]))
