@@ -76,7 +76,8 @@ group = GroupDatasets(registrationName="collection", Input=landmarked, BlockName
 tracer = function("FeatureNetTracer")(registrationName="Feature Net Tracer", Input=group, BaseDomain=base)
 straightener = function("NetStraightener")(registrationName="Net Straightener", Input=tracer, BaseDomain=base)
 remesher = function("SemiRegularRemesher")(registrationName="Semi-Regular Remesher", Input=straightener,
-                                           BaseDomain=base, Level=data.stages.get("level", 4))
+                                           BaseDomain=base, Level=data.stages.get("level", 4),
+                                           SampleRelaxationIterations=data.stages.get("relax_samples", 0))
 pca = function("MeshPCA")(registrationName="Mesh PCA", Input=remesher, NumberOfModes=data.stages.get("pca", 3))
 # Half the first model, a quarter each of the next two: the collection's
 # blend grid's middle.
