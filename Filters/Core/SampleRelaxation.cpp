@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <unordered_map>
 
@@ -12,6 +14,10 @@ namespace cmp
 {
 namespace
 {
+
+/// Halvings of a move before a vertex is left where it is (a thousandth of
+/// the step).
+constexpr int kHalvings = 10;
 
 /// A surface triangle's weight, at its image's centroid.
 struct MassPoint
@@ -36,9 +42,10 @@ std::vector<std::vector<MassPoint>> collectMass(const std::vector<const Paramete
       if (!(imageArea > 0.0) || !(area > 0.0))
         return;
       const double weight = area * (area / imageArea); // area x density: see the header
-      if (!std::isfinite(weight))
+      const Vec2 centroid = (image[0] + image[1] + image[2]) / 3.0;
+      if (!(weight > 0.0) || !std::isfinite(weight) || !centroid.allFinite())
         return;
-      mass[patch].push_back({ (image[0] + image[1] + image[2]) / 3.0, weight });
+      mass[patch].push_back({ centroid, weight });
       total[patch] += weight;
     });
     for (int p = 0; p < patchCount; ++p)
@@ -65,11 +72,7 @@ public:
     for (int t : triangles_)
       for (int v : remesh_.triangles[t])
         if (position_.find(v) == position_.end())
-        {
-          std::array<double, 3> c{};
-          coordinatesInTriangle(domain_, remesh_.locations[v].triangle, remesh_.locations[v].coordinates, patch_, c);
-          position_[v] = Vec2(c[1], c[2]);
-        }
+          locationInBaseTriangle(domain_, remesh_.locations[v], patch_, position_[v]); // checked by checkInput
   }
 
   /// Each remesh triangle's share of `mass` (weight, weighted centroid).
@@ -98,7 +101,8 @@ public:
   double moveTowards(int v, const Vec2& target, double step, const std::vector<int>& ring)
   {
     const Vec2 from = position_.at(v);
-    for (double fraction = step; fraction > 1e-3; fraction *= 0.5)
+    double fraction = step;
+    for (int halving = 0; halving < kHalvings; ++halving, fraction *= 0.5)
     {
       const Vec2 to = from + fraction * (target - from);
       position_[v] = to;
@@ -110,6 +114,24 @@ public:
     }
     position_[v] = from;
     return 0.0;
+  }
+
+  /// Puts `v` at `q`, unchecked (to undo a move).
+  void put(int v, const Vec2& q) { position_[v] = q; }
+
+  /// Puts `v` at `q` if the triangles of `ring` that lie in this base
+  /// triangle stay counter-clockwise; true if it did.
+  bool placeIfValid(int v, const Vec2& q, const std::vector<int>& ring)
+  {
+    const Vec2 from = position_.at(v);
+    position_[v] = q;
+    for (int t : ring)
+      if (remesh_.patchOfTriangle[t] == patch_ && !counterClockwise(t))
+      {
+        position_[v] = from;
+        return false;
+      }
+    return true;
   }
 
 private:
@@ -126,6 +148,58 @@ private:
   int patch_;
   std::unordered_map<int, Vec2> position_;
 };
+
+/// A vertex on a base edge: the edge's base vertices and the vertex's
+/// place along it (0 at `a`, 1 at `b`), with their indices in the vertex's
+/// own base triangle.
+struct EdgePlace
+{
+  int a = -1, b = -1;
+  int indexA = -1, indexB = -1;
+  double along = 0.0;
+};
+
+/// True, with `place`, for a vertex strictly inside a base edge.
+bool onBaseEdge(const BaseDomain& domain, const BaseLocation& at, EdgePlace& place)
+{
+  const auto& c = at.coordinates;
+  if (std::count(c.begin(), c.end(), 0.0) != 1)
+    return false;
+  const Triangle& corners = domain.mesh.triangles[at.triangle];
+  place.indexA = c[0] != 0.0 ? 0 : 1;
+  place.indexB = c[2] != 0.0 ? 2 : 1;
+  place.a = corners[place.indexA];
+  place.b = corners[place.indexB];
+  place.along = c[place.indexB] / (c[place.indexA] + c[place.indexB]);
+  return true;
+}
+
+/// The weights of base vertices `a` and `b` in point `q` of base triangle
+/// `patch` (0 for one the triangle lacks).
+std::pair<double, double> edgeWeights(const BaseDomain& domain, int patch, const Vec2& q, int a, int b)
+{
+  const Triangle& corners = domain.mesh.triangles[patch];
+  const double c[3] = { 1.0 - q.x() - q.y(), q.x(), q.y() };
+  std::pair<double, double> weights{ 0.0, 0.0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (corners[k] == a)
+      weights.first = c[k];
+    if (corners[k] == b)
+      weights.second = c[k];
+  }
+  return weights;
+}
+
+/// The point `along` base edge (a, b), in (c1, c2) of base triangle `patch`.
+Vec2 pointOnEdge(const BaseDomain& domain, int patch, int a, int b, double along)
+{
+  const Triangle& corners = domain.mesh.triangles[patch];
+  double c[3] = { 0.0, 0.0, 0.0 };
+  for (int k = 0; k < 3; ++k)
+    c[k] = corners[k] == a ? 1.0 - along : corners[k] == b ? along : 0.0;
+  return Vec2(c[1], c[2]);
+}
 
 Status checkInput(const BaseDomain& domain, const std::vector<const ParameterizedSurface*>& models,
   const SemiRegularMesh& remesh, const SampleRelaxationOptions& options)
@@ -144,10 +218,54 @@ Status checkInput(const BaseDomain& domain, const std::vector<const Parameterize
   if (std::any_of(remesh.patchOfTriangle.begin(), remesh.patchOfTriangle.end(), outside) ||
     std::any_of(remesh.locations.begin(), remesh.locations.end(), [&](const BaseLocation& at) { return outside(at.triangle); }))
     return Status::error("the remesh does not belong to this base domain (it names a base triangle it does not have)");
-  for (const Triangle& tri : remesh.triangles)
-    for (int v : tri)
+  for (std::size_t t = 0; t < remesh.triangles.size(); ++t)
+    for (int v : remesh.triangles[t])
+    {
+      Vec2 unused;
       if (v < 0 || v >= remesh.vertexCount())
         return Status::error("the remesh has a triangle with a vertex it does not have");
+      if (!locationInBaseTriangle(domain, remesh.locations[v], remesh.patchOfTriangle[t], unused) ||
+        (insideBaseTriangle(remesh.locations[v]) && remesh.locations[v].triangle != remesh.patchOfTriangle[t]))
+        return Status::error("remesh vertex " + std::to_string(v) + " does not lie in the base triangle of its triangle " +
+          std::to_string(t));
+    }
+  return {};
+}
+
+/// A fingerprint of the remesh and the options: equal on every process
+/// that relaxes the same remesh the same way.
+std::uint64_t fingerprint(const SemiRegularMesh& remesh, const SampleRelaxationOptions& options)
+{
+  std::uint64_t hash = 1469598103934665603ull; // FNV-1a
+  const auto add = [&hash](const void* data, std::size_t bytes) {
+    const auto* byte = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i)
+      hash = (hash ^ byte[i]) * 1099511628211ull;
+  };
+  add(remesh.triangles.data(), remesh.triangles.size() * sizeof(Triangle));
+  add(remesh.patchOfTriangle.data(), remesh.patchOfTriangle.size() * sizeof(int));
+  for (const BaseLocation& at : remesh.locations)
+  {
+    add(&at.triangle, sizeof at.triangle);
+    add(at.coordinates.data(), sizeof at.coordinates);
+  }
+  add(&options.iterations, sizeof options.iterations);
+  add(&options.step, sizeof options.step);
+  return hash;
+}
+
+/// Fails on every process unless all pass the same remesh and options: the
+/// sums over processes are taken per remesh triangle.
+Status agreeOnRemesh(const SemiRegularMesh& remesh, const SampleRelaxationOptions& options, Communicator& communicator)
+{
+  const std::uint64_t hash = fingerprint(remesh, options);
+  for (int shift : { 0, 31, 62 })
+  {
+    const std::vector<int> parts = communicator.allGather(static_cast<int>((hash >> shift) & 0x7fffffffu));
+    if (std::adjacent_find(parts.begin(), parts.end(), std::not_equal_to<int>()) != parts.end())
+      return Status::error("the processes relax different remeshes or with different options (an adaptive remesh "
+                           "refined on each process's own models, for one): remesh one connectivity for all");
+  }
   return {};
 }
 
@@ -176,6 +294,96 @@ void binMass(const std::vector<std::vector<MassPoint>>& mass, const std::vector<
   }
 }
 
+/// Counts one move in the report.
+void record(double moved, SampleRelaxationReport& done)
+{
+  done.movedVertices += moved > 0.0;
+  done.largestMove = std::max(done.largestMove, moved);
+}
+
+/// Moves every vertex inside a base triangle towards the mass centroid of
+/// its ring of remesh triangles.
+void moveInsideBaseTriangles(SemiRegularMesh& remesh, const std::vector<std::vector<int>>& trianglesOf,
+  const std::vector<std::vector<int>>& ringOf, const std::vector<double>& weight, const std::vector<Vec2>& moment,
+  double step, std::vector<PatchSamples>& patches, SampleRelaxationReport& done)
+{
+  std::vector<char> visited(remesh.vertexCount(), 0);
+  for (std::size_t p = 0; p < trianglesOf.size(); ++p)
+    for (int t : trianglesOf[p])
+      for (int v : remesh.triangles[t])
+      {
+        if (visited[v] || !insideBaseTriangle(remesh.locations[v]))
+          continue;
+        visited[v] = 1;
+        double ringWeight = 0.0;
+        Vec2 ringMoment = Vec2::Zero();
+        for (int r : ringOf[v])
+        {
+          ringWeight += weight[r];
+          ringMoment += moment[r];
+        }
+        if (ringWeight > 0.0)
+          record(patches[p].moveTowards(v, ringMoment / ringWeight, step, ringOf[v]), done);
+      }
+}
+
+/// Slides every vertex on a base edge along it, towards the mean place
+/// along the edge of its ring's mass centroids (in both base triangles),
+/// halving the step while a ring triangle would turn clockwise in either.
+/// The landmarks, at the edges' ends, stay.
+void slideAlongBaseEdges(const BaseDomain& domain, SemiRegularMesh& remesh,
+  const std::vector<std::vector<int>>& ringOf, const std::vector<double>& weight, const std::vector<Vec2>& moment,
+  double step, std::vector<PatchSamples>& patches, SampleRelaxationReport& done)
+{
+  for (int v = 0; v < remesh.vertexCount(); ++v)
+  {
+    EdgePlace place;
+    if (!onBaseEdge(domain, remesh.locations[v], place))
+      continue;
+    double ringWeight = 0.0, ringAlong = 0.0;
+    for (int r : ringOf[v])
+    {
+      if (!(weight[r] > 0.0))
+        continue;
+      const auto [wa, wb] = edgeWeights(domain, remesh.patchOfTriangle[r], moment[r] / weight[r], place.a, place.b);
+      if (wa + wb > 0.0)
+      {
+        ringWeight += weight[r];
+        ringAlong += weight[r] * wb / (wa + wb);
+      }
+    }
+    if (!(ringWeight > 0.0))
+      continue;
+    const double target = ringAlong / ringWeight;
+    double fraction = step;
+    for (int halving = 0; halving < kHalvings; ++halving, fraction *= 0.5)
+    {
+      const double along = place.along + fraction * (target - place.along);
+      std::vector<int> placedIn;
+      bool valid = along > 0.0 && along < 1.0;
+      for (std::size_t i = 0; i < ringOf[v].size() && valid; ++i)
+      {
+        const int p = remesh.patchOfTriangle[ringOf[v][i]];
+        if (std::find(placedIn.begin(), placedIn.end(), p) != placedIn.end())
+          continue;
+        valid = patches[p].placeIfValid(v, pointOnEdge(domain, p, place.a, place.b, along), ringOf[v]);
+        if (valid)
+          placedIn.push_back(p);
+      }
+      if (valid)
+      {
+        auto& c = remesh.locations[v].coordinates;
+        c[place.indexA] = 1.0 - along;
+        c[place.indexB] = along;
+        record(std::abs(along - place.along), done);
+        break;
+      }
+      for (int p : placedIn) // back to where it was
+        patches[p].put(v, pointOnEdge(domain, p, place.a, place.b, place.along));
+    }
+  }
+}
+
 } // namespace
 
 Status relaxSampleLocations(const BaseDomain& domain, const std::vector<const ParameterizedSurface*>& localModels,
@@ -183,6 +391,8 @@ Status relaxSampleLocations(const BaseDomain& domain, const std::vector<const Pa
   SampleRelaxationReport* report)
 {
   if (Status s = agreeOnStatus(checkInput(domain, localModels, remesh, options), communicator); !s.ok())
+    return s;
+  if (Status s = agreeOnRemesh(remesh, options, communicator); !s.ok())
     return s;
   const std::vector<int> modelCounts = communicator.allGather(static_cast<int>(localModels.size()));
   if (std::all_of(modelCounts.begin(), modelCounts.end(), [](int n) { return n == 0; }))
@@ -209,27 +419,8 @@ Status relaxSampleLocations(const BaseDomain& domain, const std::vector<const Pa
     binMass(mass, patches, communicator, weight, moment);
     done.movedVertices = 0;
     done.largestMove = 0.0;
-    std::vector<char> visited(remesh.vertexCount(), 0);
-    for (int p = 0; p < patchCount; ++p)
-      for (int t : trianglesOf[p])
-        for (int v : remesh.triangles[t])
-        {
-          if (visited[v] || !insideBaseTriangle(remesh.locations[v]))
-            continue;
-          visited[v] = 1;
-          double ringWeight = 0.0;
-          Vec2 ringMoment = Vec2::Zero();
-          for (int r : ringOf[v])
-          {
-            ringWeight += weight[r];
-            ringMoment += moment[r];
-          }
-          if (!(ringWeight > 0.0))
-            continue;
-          const double moved = patches[p].moveTowards(v, ringMoment / ringWeight, options.step, ringOf[v]);
-          done.movedVertices += moved > 0.0;
-          done.largestMove = std::max(done.largestMove, moved);
-        }
+    moveInsideBaseTriangles(remesh, trianglesOf, ringOf, weight, moment, options.step, patches, done);
+    slideAlongBaseEdges(domain, remesh, ringOf, weight, moment, options.step, patches, done);
   }
   if (report)
     *report = done;

@@ -96,6 +96,15 @@ std::vector<Triangle> baseTrianglesAsRemeshVertices(const BaseDomain& domain)
 
 } // namespace
 
+bool locationInBaseTriangle(const BaseDomain& domain, const BaseLocation& at, int triangle, Vec2& result)
+{
+  std::array<double, 3> c{};
+  if (!coordinatesInTriangle(domain, at.triangle, at.coordinates, triangle, c))
+    return false;
+  result = Vec2(c[1], c[2]);
+  return true;
+}
+
 Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out)
 {
   if (level < 0 || level > 8)

@@ -26,6 +26,11 @@ struct BaseLocation
   std::array<double, 3> coordinates{ { 0.0, 0.0, 0.0 } }; ///< Barycentric coordinates.
 };
 
+/// \brief `at` in barycentric coordinates (c1, c2) of base triangle
+///        `triangle` (its own, or one sharing the vertices `at` lies on);
+///        false, `result` untouched, if `at` is not on that triangle.
+bool locationInBaseTriangle(const BaseDomain& domain, const BaseLocation& at, int triangle, Vec2& result);
+
 /// \brief The semi-regular connectivity shared by every model of a
 ///        collection.
 ///

@@ -23,9 +23,11 @@ public:
 
   /// \brief The triangle (index into `corners`) that contains `q` best:
   ///        largest smallest barycentric coordinate, searched in rings of
-  ///        cells outwards until one contains it (within 1e-9). `weights`
-  ///        are `q`'s barycentric coordinates in it. Triangles without
-  ///        positive area are skipped. False if there is none.
+  ///        cells outwards until one contains it (within 1e-9); if none
+  ///        does, the best of all (a point just outside every triangle
+  ///        gets the nearest). `weights` are `q`'s barycentric coordinates
+  ///        in it. Triangles without positive area are skipped. False only
+  ///        if no triangle has positive area.
   bool locate(const Vec2& q, int& best, std::array<double, 3>& weights) const;
 
 private:

@@ -70,22 +70,35 @@ TEST(SampleRelaxation, ReachesFurtherIntoATailAndKeepsAValidLayout)
   EXPECT_EQ(report.iterations, 4);
   EXPECT_GT(report.movedVertices, relaxed.vertexCount() / 2);
 
-  // Only locations inside base triangles move, and they stay inside.
+  // Landmarks stay; a vertex inside a base triangle stays inside it, one on
+  // a base edge slides along it (the same coordinate stays exactly 0).
   EXPECT_EQ(relaxed.triangles, uniform.triangles);
   EXPECT_EQ(relaxed.patchOfTriangle, uniform.patchOfTriangle);
   EXPECT_EQ(relaxed.levelOfVertex, uniform.levelOfVertex);
-  int moved = 0;
+  int moved = 0, slid = 0;
   for (int v = 0; v < uniform.vertexCount(); ++v)
   {
     const BaseLocation &before = uniform.locations[v], &after = relaxed.locations[v];
     ASSERT_EQ(after.triangle, before.triangle);
-    if (!strictlyInside(before))
-      EXPECT_EQ(after.coordinates, before.coordinates) << "vertex " << v << " on a base edge moved";
-    else
+    if (v < domain.mesh.vertexCount())
+      EXPECT_EQ(after.coordinates, before.coordinates) << "landmark " << v << " moved";
+    else if (strictlyInside(before))
       EXPECT_TRUE(strictlyInside(after)) << "vertex " << v << " left its base triangle";
+    else
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_EQ(after.coordinates[k] == 0.0, before.coordinates[k] == 0.0) << "vertex " << v << " left its base edge";
+        EXPECT_GE(after.coordinates[k], 0.0);
+      }
+      EXPECT_DOUBLE_EQ(after.coordinates[0] + after.coordinates[1] + after.coordinates[2], 1.0);
+      slid += after.coordinates != before.coordinates;
+    }
     moved += after.coordinates != before.coordinates;
   }
-  EXPECT_GE(moved, report.movedVertices); // the last round's moves are among them
+  EXPECT_GT(moved, uniform.vertexCount() / 2);
+  EXPECT_GT(slid, 0);
+  EXPECT_GT(report.largestMove, 0.0);
   EXPECT_EQ(clockwiseTriangles(domain, relaxed), 0);
 
   const TracedNet& net = indexed.parameterized[0].net;
@@ -159,6 +172,52 @@ TEST(SampleRelaxation, ModelsSpreadOverRanksMoveTheLocationsAsOneProcessDoes)
   }
 }
 
+TEST(SampleRelaxation, RanksWithDifferentRemeshesAllFail)
+{
+  // An adaptive remesh refined on each rank's own models differs between
+  // ranks: the per-triangle sums would not match, so every rank refuses.
+  const BaseDomain domain = test::realBaseDomain("381");
+  test::IndexedModels indexed;
+  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
+  for (bool sameLevelOtherStep : { false, true })
+  {
+    std::mutex mutex;
+    test::runOnRanks(2, [&](Communicator& communicator) {
+      SemiRegularMesh mesh;
+      const int level = sameLevelOtherStep ? 3 : 2 + communicator.rank();
+      ASSERT_TRUE(buildSemiRegularMesh(domain, level, mesh).ok());
+      const SemiRegularMesh untouched = mesh;
+      SampleRelaxationOptions options;
+      if (sameLevelOtherStep && communicator.rank() == 1)
+        options.step = 0.25;
+      const Status status = relaxSampleLocations(domain, indexed.collection, communicator, mesh, options);
+      const std::lock_guard<std::mutex> lock(mutex);
+      EXPECT_FALSE(status.ok());
+      EXPECT_NE(status.message().find("different remeshes or with different options"), std::string::npos)
+        << status.message();
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+        ASSERT_EQ(mesh.locations[v].coordinates, untouched.locations[v].coordinates);
+    });
+  }
+}
+
+TEST(SampleRelaxation, ASmallStepStillMoves)
+{
+  const BaseDomain domain = test::realBaseDomain("381");
+  test::IndexedModels indexed;
+  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
+  SemiRegularMesh mesh;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 3, mesh).ok());
+  SampleRelaxationOptions options;
+  options.iterations = 1;
+  options.step = 1e-4;
+  SampleRelaxationReport report;
+  ASSERT_TRUE(relaxSampleLocations(domain, indexed.collection, mesh, options, &report).ok());
+  EXPECT_GT(report.movedVertices, 0);
+  EXPECT_GT(report.largestMove, 0.0);
+  EXPECT_LT(report.largestMove, 1e-4);
+}
+
 TEST(SampleRelaxation, ZeroRoundsLeaveTheLocationsAlone)
 {
   const BaseDomain domain = test::realBaseDomain("381");
@@ -203,6 +262,17 @@ TEST(SampleRelaxation, BadInputIsNamedAndLeavesTheRemeshAlone)
     options.step = step;
     expectError(relaxSampleLocations(domain, indexed.collection, mesh, options), "step");
   }
+  // A vertex whose base location is not in the base triangle of its triangle.
+  SemiRegularMesh misplaced = mesh;
+  const int inside = mesh.vertexCount() - 1; // the last midpoint of level 3 lies inside a base triangle
+  ASSERT_TRUE(std::all_of(mesh.locations[inside].coordinates.begin(), mesh.locations[inside].coordinates.end(),
+    [](double c) { return c > 0.0; }));
+  misplaced.locations[inside].triangle = (mesh.locations[inside].triangle + 1) % domain.mesh.triangleCount();
+  const Status outside = relaxSampleLocations(domain, indexed.collection, misplaced);
+  EXPECT_FALSE(outside.ok());
+  EXPECT_NE(outside.message().find("does not lie in the base triangle of its triangle"), std::string::npos)
+    << outside.message();
+
   // A remesh of a larger base domain names base triangles this one lacks.
   SemiRegularMesh foreign = mesh;
   foreign.patchOfTriangle.back() = domain.mesh.triangleCount();
