@@ -27,14 +27,7 @@
 
 vtkStandardNewMacro(vtkCMPMeshPCA);
 
-void vtkCMPMeshPCA::SetController(vtkMultiProcessController* controller)
-{
-  if (this->Controller != controller)
-  {
-    this->Controller = controller;
-    this->Modified();
-  }
-}
+vtkCxxSetSmartPointerMacro(vtkCMPMeshPCA, Controller, vtkMultiProcessController);
 
 vtkMultiProcessController* vtkCMPMeshPCA::GetController()
 {

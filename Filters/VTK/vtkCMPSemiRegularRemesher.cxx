@@ -37,6 +37,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -49,14 +50,7 @@ vtkCMPSemiRegularRemesher::vtkCMPSemiRegularRemesher()
   this->SetNumberOfOutputPorts(2);
 }
 
-void vtkCMPSemiRegularRemesher::SetController(vtkMultiProcessController* controller)
-{
-  if (this->Controller != controller)
-  {
-    this->Controller = controller;
-    this->Modified();
-  }
-}
+vtkCxxSetSmartPointerMacro(vtkCMPSemiRegularRemesher, Controller, vtkMultiProcessController);
 
 vtkMultiProcessController* vtkCMPSemiRegularRemesher::GetController()
 {
@@ -393,49 +387,40 @@ int vtkCMPSemiRegularRemesher::RequestData(
   vtkPolyData* baseInput = vtkPolyData::GetData(inputVector[1]);
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
   vtkPolyData* connectivityOutput = vtkPolyData::GetData(outputVector, 1);
-  if (!baseInput)
-  {
-    vtkErrorMacro("no base domain: connect L0 (the one the surfaces were parameterized over) to the second input");
-    return 0;
-  }
-  if (this->Level < 0 || this->Level > 8)
-  {
-    vtkErrorMacro("Level must be between 0 and 8 (it is " << this->Level << ")");
-    return 0;
-  }
-  if (!(this->AdaptiveTolerance >= 0.0) || !std::isfinite(this->AdaptiveTolerance))
-  {
-    vtkErrorMacro("AdaptiveTolerance must be 0 (uniform) or a positive fraction of the bounding-box diagonal (it is "
-      << this->AdaptiveTolerance << ")");
-    return 0;
-  }
-  cmp::BaseDomain domain;
-  if (cmp::Status status = cmp::bridge::toBaseDomain(baseInput, domain); !status.ok())
-  {
-    vtkErrorMacro(<< status.message());
-    return 0;
-  }
-
-  if (this->SampleRelaxationIterations < 0)
-  {
-    vtkErrorMacro("SampleRelaxationIterations must be 0 (none) or a positive number of rounds (it is "
-      << this->SampleRelaxationIterations << ")");
-    return 0;
-  }
-  // Relaxation sums over every rank's models: from here on, a rank that
-  // fails must say so to the others instead of leaving them waiting.
-  const bool relax = this->SampleRelaxationIterations > 0;
-  cmp::bridge::ControllerCommunicator communicator(this->Controller);
   const auto fail = [&](const std::string& message)
   {
     vtkErrorMacro(<< message);
     output->Initialize();
     return 0;
   };
+  // The properties are the same on every rank: a bad one stops them all.
+  if (this->Level < 0 || this->Level > 8)
+    return fail("Level must be between 0 and 8 (it is " + std::to_string(this->Level) + ")");
+  if (!(this->AdaptiveTolerance >= 0.0) || !std::isfinite(this->AdaptiveTolerance))
+  {
+    std::ostringstream message;
+    message << "AdaptiveTolerance must be 0 (uniform) or a positive fraction of the bounding-box diagonal (it is "
+            << this->AdaptiveTolerance << ")";
+    return fail(message.str());
+  }
+  if (this->SampleRelaxationIterations < 0)
+    return fail("SampleRelaxationIterations must be 0 (none) or a positive number of rounds (it is " +
+      std::to_string(this->SampleRelaxationIterations) + ")");
+
+  // The inputs may differ between ranks. Relaxation sums over every rank's
+  // models, so with it a rank whose input fails says so to the others
+  // (agreeOnStatus) instead of leaving them waiting in the sums.
+  const bool relax = this->SampleRelaxationIterations > 0;
+  cmp::bridge::ControllerCommunicator communicator(this->Controller);
+  cmp::BaseDomain domain;
+  cmp::Status local = baseInput
+    ? cmp::bridge::toBaseDomain(baseInput, domain)
+    : cmp::Status::error("no base domain: connect L0 (the one the surfaces were parameterized over) to the second input");
 
   // The surfaces to remesh: the input itself, or every leaf of a multiblock.
   cmp::bridge::SurfaceCollection collection;
-  cmp::Status local = cmp::bridge::collectSurfaces(input, collection, /*allowEmpty=*/relax && communicator.size() > 1);
+  if (local.ok())
+    local = cmp::bridge::collectSurfaces(input, collection, /*allowEmpty=*/relax && communicator.size() > 1);
   std::vector<std::unique_ptr<ModelRemesher>> models;
   if (local.ok())
     for (vtkPolyData* surface : collection.surfaces)
@@ -448,10 +433,6 @@ int vtkCMPSemiRegularRemesher::RequestData(
       local = cmp::Status::error(names[m] + status.message());
     this->UpdateProgress(0.3 * (m + 1) / modelCount);
   }
-  if (relax)
-    local = cmp::agreeOnStatus(local, communicator);
-  if (!local.ok())
-    return fail(local.message());
   std::vector<const cmp::ParameterizedSurface*> surfaces;
   for (const auto& model : models)
     surfaces.push_back(&model->surface());
@@ -459,14 +440,15 @@ int vtkCMPSemiRegularRemesher::RequestData(
   // One connectivity for the whole collection: with a tolerance, a triangle
   // is split when any model needs it.
   SharedRemesh shared;
-  cmp::Status status;
-  if (this->AdaptiveTolerance > 0.0)
-    status = cmp::buildAdaptiveSemiRegularMesh(
+  if (local.ok() && this->AdaptiveTolerance > 0.0)
+    local = cmp::buildAdaptiveSemiRegularMesh(
       domain, this->Level, cmp::flatnessSplitRule(surfaces, this->AdaptiveTolerance), shared.mesh);
-  else
-    status = cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
-  if (!status.ok())
-    return fail(status.message());
+  else if (local.ok())
+    local = cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
+  if (relax)
+    local = cmp::agreeOnStatus(local, communicator);
+  if (!local.ok())
+    return fail(local.message());
   if (relax)
   {
     const auto start = std::chrono::steady_clock::now();

@@ -17,14 +17,7 @@
 
 vtkStandardNewMacro(vtkCMPShapeBlend);
 
-void vtkCMPShapeBlend::SetController(vtkMultiProcessController* controller)
-{
-  if (this->Controller != controller)
-  {
-    this->Controller = controller;
-    this->Modified();
-  }
-}
+vtkCxxSetSmartPointerMacro(vtkCMPShapeBlend, Controller, vtkMultiProcessController);
 
 vtkMultiProcessController* vtkCMPShapeBlend::GetController()
 {

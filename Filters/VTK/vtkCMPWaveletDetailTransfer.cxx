@@ -167,14 +167,7 @@ vtkCMPWaveletDetailTransfer::vtkCMPWaveletDetailTransfer()
   this->SetNumberOfOutputPorts(2);
 }
 
-void vtkCMPWaveletDetailTransfer::SetController(vtkMultiProcessController* controller)
-{
-  if (this->Controller != controller)
-  {
-    this->Controller = controller;
-    this->Modified();
-  }
-}
+vtkCxxSetSmartPointerMacro(vtkCMPWaveletDetailTransfer, Controller, vtkMultiProcessController);
 
 vtkMultiProcessController* vtkCMPWaveletDetailTransfer::GetController()
 {

@@ -108,6 +108,22 @@ def check_relaxation_across_ranks(share, blocks, domain, controller):
     moved = int((numpy.abs(locations[1] - locations[2]).max(axis=1) > 0).sum())
     check(moved > locations[2].shape[0] // 2, "relaxation moved only %d of %d vertices" % (moved, len(locations[2])))
     check_equal(int(spread.GetFieldData().GetArray("SampleRelaxationRounds").GetValue(0)), 4, "relaxation rounds")
+
+    # Adaptive refinement decided on each rank's own models gives each rank
+    # another remesh: relaxing them would mix sums of different triangles,
+    # so every rank refuses (and none waits for the others).
+    adaptive = cmp.vtkCMPSemiRegularRemesher()
+    adaptive.SetInputData(0, share)
+    adaptive.SetInputData(1, domain)
+    adaptive.SetLevel(4)
+    adaptive.SetAdaptiveTolerance(0.002)
+    adaptive.SetSampleRelaxationIterations(2)
+    adaptive.SetController(controller)
+    adaptive.GlobalWarningDisplayOff()  # the expected error, not noise in the log
+    refused = adaptive.GetExecutive().Update()
+    adaptive.GlobalWarningDisplayOn()
+    check_equal(refused, 0, "relaxing per-rank adaptive remeshes")
+    check_equal(adaptive.GetOutputDataObject(1).GetNumberOfPoints(), 0, "connectivity after the refusal")
     return moved
 
 
