@@ -860,9 +860,9 @@ def parse_arguments(argv):
                         "default 0: uniform)")
     parser.add_argument("--relax-samples", type=int, metavar="N",
                         help="N rounds of sample relaxation (the Semi-Regular Remesher's SampleRelaxationIterations; "
-                        "default 0, or the collection's relax_samples): remesh vertices move inside each L0 triangle towards where the models' surface "
-                        "crowds in the parameterization (tails, ears), one set of locations for the whole "
-                        "collection; 4 is a good choice")
+                        "default 0, or the collection's relax_samples): remesh vertices move within their L0 "
+                        "triangle or edge towards where the models' surface crowds in the parameterization (tails, "
+                        "ears), one set of locations for the whole collection; 4 is a good choice")
     parser.add_argument("--lower-stretch", action="store_true",
                         help="lower the stretch of every patch's map (Net Straightener's LowerStretch): parts "
                         "without landmarks, such as ears and tails, get more remesh vertices, at the price of more "
