@@ -1,5 +1,6 @@
-"""What the documentation pictures share: a white render view without axes."""
-from paraview.simple import CreateView
+"""What the documentation pictures share: white render views without axes,
+two of them side by side, a grey remesh, a camera aimed in one call."""
+from paraview.simple import AssignViewToLayout, CreateLayout, CreateView, Show
 
 
 def white_view(width, height):
@@ -23,3 +24,40 @@ def landmarked_shrec(names, data, model):
     folder = data + "/shrec07-fourleg/"
     reader = names["ConsistentMeshSurfaceReader"](FileName=folder + model + ".off")
     return names["LandmarksFromFile"](Input=reader, LandmarkFile=folder + model + ".vts")
+
+
+def side_by_side(title, width=700, height=600):
+    """A layout of two white views of the given size, left and right: the
+    layout and the two views."""
+    layout = CreateLayout(title)
+    layout.SplitHorizontal(0, 0.5)
+    views = []
+    for cell in (1, 2):
+        view = white_view(width, height)
+        AssignViewToLayout(view=view, layout=layout, hint=cell)
+        views.append(view)
+    return layout, views
+
+
+def show_grey(port, view, edges=True):
+    """`port` shown in light grey, with dark edges unless `edges` is false."""
+    shown = Show(port, view)
+    shown.SetRepresentationType("Surface With Edges" if edges else "Surface")
+    shown.ColorArrayName = [None, ""]
+    shown.DiffuseColor = [0.85, 0.85, 0.85]
+    if edges:
+        shown.EdgeColor = [0.25, 0.25, 0.25]
+    return shown
+
+
+def aim(view, focus, position, up=(0, 1, 0), scale=None, angle=None):
+    """Points the camera of `view` from `position` at `focus`: a parallel
+    projection of half-height `scale`, or a perspective of view `angle`."""
+    view.CameraFocalPoint = list(focus)
+    view.CameraPosition = list(position)
+    view.CameraViewUp = list(up)
+    if scale is not None:
+        view.CameraParallelProjection = 1
+        view.CameraParallelScale = scale
+    elif angle is not None:
+        view.CameraViewAngle = angle

@@ -9,7 +9,7 @@ Usage: pvpython render_fold_repair.py PLUGIN.so DATA_DIR OUTPUT.png
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import landmarked_shrec, white_view
+from render_common import aim, landmarked_shrec, show_grey, side_by_side
 
 plugin, data, output = sys.argv[1:4]
 LoadPlugin(plugin, ns=globals())
@@ -19,17 +19,11 @@ spot = LandmarksFromFile(Input=ConsistentMeshSurfaceReader(FileName=data + "/spo
                          LandmarkFile=data + "/spot/spot_shrec07.pinned")
 straightener = NetStraightener(Input=FeatureNetTracer(Input=spot, BaseDomain=base), BaseDomain=base)
 
-layout = CreateLayout("fold repair")
-layout.SplitHorizontal(0, 0.5)
-for cell, repair in ((1, 0), (2, 1)):
+layout, views = side_by_side("fold repair")
+for view, repair in zip(views, (0, 1)):
     remesher = SemiRegularRemesher(Input=straightener, BaseDomain=base, Level=5, RepairFolds=repair,
                                    ComputeDistance=0)
-    view = white_view(700, 600)
-    AssignViewToLayout(view=view, layout=layout, hint=cell)
-    shown = Show(OutputPort(remesher, 0), view)
-    shown.SetRepresentationType("Surface")
-    shown.ColorArrayName = [None, ""]
-    shown.DiffuseColor = [0.85, 0.85, 0.85]
+    show_grey(OutputPort(remesher, 0), view, edges=False)
     # Folded triangles are needles, too thin to see filled: drawn as thick
     # red outlines over the surface.
     folds = Threshold(Input=OutputPort(remesher, 0), Scalars=["CELLS", "Folded"])
@@ -40,9 +34,6 @@ for cell, repair in ((1, 0), (2, 1)):
     outlined.AmbientColor = outlined.DiffuseColor = [0.9, 0.05, 0.05]
     outlined.LineWidth = 3
     # From below, a little from the front: the belly and the front legs.
-    view.CameraFocalPoint = [0.0, -0.15, -0.1]
-    view.CameraPosition = [0.5, -1.3, 0.2]
-    view.CameraViewUp = [0, 0, -1]
-    view.CameraViewAngle = 30
+    aim(view, (0.0, -0.15, -0.1), (0.5, -1.3, 0.2), up=(0, 0, -1), angle=30)
 SaveScreenshot(output, layout, ImageResolution=[1400, 600])
 print("wrote", output)

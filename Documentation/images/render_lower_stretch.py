@@ -14,7 +14,7 @@ Usage: pvpython render_lower_stretch.py PLUGIN.so DATA_DIR OUTPUT.png [MODEL]
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import landmarked_shrec, white_view
+from render_common import aim, landmarked_shrec, show_grey, side_by_side
 
 plugin, data, output = sys.argv[1:4]
 model = sys.argv[4] if len(sys.argv) > 4 else "381"
@@ -31,25 +31,11 @@ animal = landmarked_shrec(globals(), data, model)
 base = BaseDomainBuilder(Input=animal)
 tracer = FeatureNetTracer(Input=animal, BaseDomain=base)
 
-layout = CreateLayout("lower stretch")
-layout.SplitHorizontal(0, 0.5)
-for cell, lower in ((1, 0), (2, 1)):
+layout, views = side_by_side("lower stretch")
+for view, lower in zip(views, (0, 1)):
     straightener = NetStraightener(Input=tracer, BaseDomain=base, LowerStretch=lower)
     remesher = SemiRegularRemesher(Input=straightener, BaseDomain=base, Level=5)
-    view = white_view(700, 600)
-    AssignViewToLayout(view=view, layout=layout, hint=cell)
-    shown = Show(OutputPort(remesher, 0), view)
-    shown.SetRepresentationType("Surface With Edges")
-    shown.ColorArrayName = [None, ""]
-    shown.DiffuseColor = [0.85, 0.85, 0.85]
-    shown.EdgeColor = [0.25, 0.25, 0.25]
-    view.CameraFocalPoint = camera["focus"]
-    view.CameraPosition = camera["position"]
-    view.CameraViewUp = [0, 1, 0]
-    if "scale" in camera:
-        view.CameraParallelProjection = 1
-        view.CameraParallelScale = camera["scale"]
-    else:
-        view.CameraViewAngle = camera["angle"]
+    show_grey(OutputPort(remesher, 0), view)
+    aim(view, camera["focus"], camera["position"], scale=camera.get("scale"), angle=camera.get("angle"))
 SaveScreenshot(output, layout, ImageResolution=[1400, 600])
 print("wrote", output)

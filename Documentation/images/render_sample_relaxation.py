@@ -11,7 +11,7 @@ Usage: pvpython render_sample_relaxation.py PLUGIN.so DATA_DIR OUTPUT.png [MODEL
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import landmarked_shrec, white_view
+from render_common import aim, landmarked_shrec, show_grey, side_by_side
 
 plugin, data, output = sys.argv[1:4]
 model = sys.argv[4] if len(sys.argv) > 4 else "389"
@@ -27,21 +27,10 @@ base = BaseDomainBuilder(Input=animal)
 tracer = FeatureNetTracer(Input=animal, BaseDomain=base)
 straightener = NetStraightener(Input=tracer, BaseDomain=base)
 
-layout = CreateLayout("sample relaxation")
-layout.SplitHorizontal(0, 0.5)
-for cell, rounds in ((1, 0), (2, 4)):
+layout, views = side_by_side("sample relaxation")
+for view, rounds in zip(views, (0, 4)):
     remesher = SemiRegularRemesher(Input=straightener, BaseDomain=base, Level=5, SampleRelaxationIterations=rounds)
-    view = white_view(700, 600)
-    AssignViewToLayout(view=view, layout=layout, hint=cell)
-    shown = Show(OutputPort(remesher, 0), view)
-    shown.SetRepresentationType("Surface With Edges")
-    shown.ColorArrayName = [None, ""]
-    shown.DiffuseColor = [0.85, 0.85, 0.85]
-    shown.EdgeColor = [0.25, 0.25, 0.25]
-    view.CameraFocalPoint = camera["focus"]
-    view.CameraPosition = camera["position"]
-    view.CameraViewUp = camera["up"]
-    view.CameraParallelProjection = 1
-    view.CameraParallelScale = camera["scale"]
+    show_grey(OutputPort(remesher, 0), view)
+    aim(view, camera["focus"], camera["position"], camera["up"], scale=camera["scale"])
 SaveScreenshot(output, layout, ImageResolution=[1400, 600])
 print("wrote", output)
