@@ -19,6 +19,35 @@ namespace
 /// the step).
 constexpr int kHalvings = 10;
 
+/// The first fraction of step, step / 2, ... (`kHalvings` of them) for
+/// which `tryMove(fraction)` succeeds; 0 if none does.
+template <class TryMove>
+double firstSafeFraction(double step, TryMove tryMove)
+{
+  double fraction = step;
+  for (int halving = 0; halving < kHalvings; ++halving, fraction *= 0.5)
+    if (tryMove(fraction))
+      return fraction;
+  return 0.0;
+}
+
+/// Per remesh triangle (column), the mass it holds: row 0 the weight, rows
+/// 1 and 2 the first moment (weight x place); one block, so that one call
+/// sums it over the processes.
+using BinnedMass = Eigen::Matrix3Xd;
+
+/// The weight in remesh triangle `t`.
+double weightIn(const BinnedMass& binned, int t)
+{
+  return binned(0, t);
+}
+
+/// The first moment of the mass in remesh triangle `t`.
+Vec2 momentIn(const BinnedMass& binned, int t)
+{
+  return binned.block<2, 1>(1, t);
+}
+
 /// A surface triangle's weight, at its image's centroid.
 struct MassPoint
 {
@@ -67,16 +96,16 @@ class PatchSamples
 {
 public:
   PatchSamples(const BaseDomain& domain, SemiRegularMesh& remesh, const std::vector<int>& triangles, int patch)
-    : domain_(domain), remesh_(remesh), triangles_(triangles), patch_(patch)
+    : remesh_(remesh), triangles_(triangles), patch_(patch)
   {
     for (int t : triangles_)
       for (int v : remesh_.triangles[t])
         if (position_.find(v) == position_.end())
-          locationInBaseTriangle(domain_, remesh_.locations[v], patch_, position_[v]); // checked by checkInput
+          locationInBaseTriangle(domain, remesh_.locations[v], patch_, position_[v]); // checked by checkInput
   }
 
   /// Each remesh triangle's share of `mass` (weight, weighted centroid).
-  void bin(const std::vector<MassPoint>& mass, std::vector<double>& weight, std::vector<Vec2>& moment) const
+  void bin(const std::vector<MassPoint>& mass, BinnedMass& binned) const
   {
     std::vector<std::array<Vec2, 3>> corners(triangles_.size());
     for (std::size_t i = 0; i < triangles_.size(); ++i)
@@ -90,8 +119,8 @@ public:
       std::array<double, 3> unused{};
       if (!grid.locate(point.at, found, unused))
         continue;
-      weight[triangles_[found]] += point.weight;
-      moment[triangles_[found]] += point.weight * point.at;
+      binned(0, triangles_[found]) += point.weight;
+      binned.block<2, 1>(1, triangles_[found]) += point.weight * point.at;
     }
   }
 
@@ -101,19 +130,13 @@ public:
   double moveTowards(int v, const Vec2& target, double step, const std::vector<int>& ring)
   {
     const Vec2 from = position_.at(v);
-    double fraction = step;
-    for (int halving = 0; halving < kHalvings; ++halving, fraction *= 0.5)
-    {
-      const Vec2 to = from + fraction * (target - from);
-      position_[v] = to;
-      if (std::all_of(ring.begin(), ring.end(), [&](int t) { return counterClockwise(t); }))
-      {
-        remesh_.locations[v].coordinates = { 1.0 - to.x() - to.y(), to.x(), to.y() };
-        return (to - from).norm();
-      }
-    }
-    position_[v] = from;
-    return 0.0;
+    const double fraction =
+      firstSafeFraction(step, [&](double f) { return placeIfValid(v, from + f * (target - from), ring); });
+    if (!(fraction > 0.0))
+      return 0.0;
+    const Vec2 to = position_.at(v);
+    remesh_.locations[v].coordinates = { 1.0 - to.x() - to.y(), to.x(), to.y() };
+    return (to - from).norm();
   }
 
   /// Puts `v` at `q`, unchecked (to undo a move).
@@ -142,7 +165,6 @@ private:
     return cross2(position_.at(tri[1]) - a, position_.at(tri[2]) - a) > 0.0;
   }
 
-  const BaseDomain& domain_;
   SemiRegularMesh& remesh_;
   const std::vector<int>& triangles_;
   int patch_;
@@ -191,14 +213,15 @@ std::pair<double, double> edgeWeights(const BaseDomain& domain, int patch, const
   return weights;
 }
 
-/// The point `along` base edge (a, b), in (c1, c2) of base triangle `patch`.
-Vec2 pointOnEdge(const BaseDomain& domain, int patch, int a, int b, double along)
+/// The place `along` the base edge of `place`, as a location in the
+/// vertex's own base triangle `home`.
+BaseLocation alongEdge(int home, const EdgePlace& place, double along)
 {
-  const Triangle& corners = domain.mesh.triangles[patch];
-  double c[3] = { 0.0, 0.0, 0.0 };
-  for (int k = 0; k < 3; ++k)
-    c[k] = corners[k] == a ? 1.0 - along : corners[k] == b ? along : 0.0;
-  return Vec2(c[1], c[2]);
+  BaseLocation at;
+  at.triangle = home;
+  at.coordinates[place.indexA] = 1.0 - along;
+  at.coordinates[place.indexB] = along;
+  return at;
 }
 
 Status checkInput(const BaseDomain& domain, const std::vector<const ParameterizedSurface*>& models,
@@ -269,29 +292,15 @@ Status agreeOnRemesh(const SemiRegularMesh& remesh, const SampleRelaxationOption
   return {};
 }
 
-/// The collection's mass in each remesh triangle: weight and first moment,
-/// summed over every process's models.
+/// The collection's mass in each remesh triangle, summed over every
+/// process's models.
 void binMass(const std::vector<std::vector<MassPoint>>& mass, const std::vector<PatchSamples>& patches,
-  Communicator& communicator, std::vector<double>& weight, std::vector<Vec2>& moment)
+  Communicator& communicator, BinnedMass& binned)
 {
-  const std::size_t count = weight.size();
-  std::fill(weight.begin(), weight.end(), 0.0);
-  std::fill(moment.begin(), moment.end(), Vec2::Zero());
+  binned.setZero();
   for (std::size_t p = 0; p < patches.size(); ++p)
-    patches[p].bin(mass[p], weight, moment);
-  std::vector<double> packed(3 * count);
-  for (std::size_t t = 0; t < count; ++t)
-  {
-    packed[3 * t] = weight[t];
-    packed[3 * t + 1] = moment[t].x();
-    packed[3 * t + 2] = moment[t].y();
-  }
-  communicator.allReduceSum(packed.data(), packed.size());
-  for (std::size_t t = 0; t < count; ++t)
-  {
-    weight[t] = packed[3 * t];
-    moment[t] = Vec2(packed[3 * t + 1], packed[3 * t + 2]);
-  }
+    patches[p].bin(mass[p], binned);
+  communicator.allReduceSum(binned.data(), static_cast<std::size_t>(binned.size()));
 }
 
 /// Counts one move in the report.
@@ -304,7 +313,7 @@ void record(double moved, SampleRelaxationReport& done)
 /// Moves every vertex inside a base triangle towards the mass centroid of
 /// its ring of remesh triangles.
 void moveInsideBaseTriangles(SemiRegularMesh& remesh, const std::vector<std::vector<int>>& trianglesOf,
-  const std::vector<std::vector<int>>& ringOf, const std::vector<double>& weight, const std::vector<Vec2>& moment,
+  const std::vector<std::vector<int>>& ringOf, const BinnedMass& binned,
   double step, std::vector<PatchSamples>& patches, SampleRelaxationReport& done)
 {
   std::vector<char> visited(remesh.vertexCount(), 0);
@@ -319,8 +328,8 @@ void moveInsideBaseTriangles(SemiRegularMesh& remesh, const std::vector<std::vec
         Vec2 ringMoment = Vec2::Zero();
         for (int r : ringOf[v])
         {
-          ringWeight += weight[r];
-          ringMoment += moment[r];
+          ringWeight += weightIn(binned, r);
+          ringMoment += momentIn(binned, r);
         }
         if (ringWeight > 0.0)
           record(patches[p].moveTowards(v, ringMoment / ringWeight, step, ringOf[v]), done);
@@ -332,7 +341,7 @@ void moveInsideBaseTriangles(SemiRegularMesh& remesh, const std::vector<std::vec
 /// halving the step while a ring triangle would turn clockwise in either.
 /// The landmarks, at the edges' ends, stay.
 void slideAlongBaseEdges(const BaseDomain& domain, SemiRegularMesh& remesh,
-  const std::vector<std::vector<int>>& ringOf, const std::vector<double>& weight, const std::vector<Vec2>& moment,
+  const std::vector<std::vector<int>>& ringOf, const BinnedMass& binned,
   double step, std::vector<PatchSamples>& patches, SampleRelaxationReport& done)
 {
   for (int v = 0; v < remesh.vertexCount(); ++v)
@@ -343,43 +352,48 @@ void slideAlongBaseEdges(const BaseDomain& domain, SemiRegularMesh& remesh,
     double ringWeight = 0.0, ringAlong = 0.0;
     for (int r : ringOf[v])
     {
-      if (!(weight[r] > 0.0))
+      const double weight = weightIn(binned, r);
+      if (!(weight > 0.0))
         continue;
-      const auto [wa, wb] = edgeWeights(domain, remesh.patchOfTriangle[r], moment[r] / weight[r], place.a, place.b);
+      const auto [wa, wb] = edgeWeights(domain, remesh.patchOfTriangle[r], momentIn(binned, r) / weight, place.a, place.b);
       if (wa + wb > 0.0)
       {
-        ringWeight += weight[r];
-        ringAlong += weight[r] * wb / (wa + wb);
+        ringWeight += weight;
+        ringAlong += weight * wb / (wa + wb);
       }
     }
     if (!(ringWeight > 0.0))
       continue;
     const double target = ringAlong / ringWeight;
-    double fraction = step;
-    for (int halving = 0; halving < kHalvings; ++halving, fraction *= 0.5)
-    {
-      const double along = place.along + fraction * (target - place.along);
+    BaseLocation& at = remesh.locations[v];
+    // Placed in each base triangle of its ring, or back where it was in all.
+    const auto placeEverywhere = [&](const BaseLocation& where, bool check) {
       std::vector<int> placedIn;
-      bool valid = along > 0.0 && along < 1.0;
-      for (std::size_t i = 0; i < ringOf[v].size() && valid; ++i)
+      for (int r : ringOf[v])
       {
-        const int p = remesh.patchOfTriangle[ringOf[v][i]];
+        const int p = remesh.patchOfTriangle[r];
         if (std::find(placedIn.begin(), placedIn.end(), p) != placedIn.end())
           continue;
-        valid = patches[p].placeIfValid(v, pointOnEdge(domain, p, place.a, place.b, along), ringOf[v]);
-        if (valid)
-          placedIn.push_back(p);
+        Vec2 q;
+        locationInBaseTriangle(domain, where, p, q); // an edge vertex lies on both its base triangles
+        if (!patches[p].placeIfValid(v, q, check ? ringOf[v] : std::vector<int>{}))
+          return false;
+        placedIn.push_back(p);
       }
-      if (valid)
-      {
-        auto& c = remesh.locations[v].coordinates;
-        c[place.indexA] = 1.0 - along;
-        c[place.indexB] = along;
-        record(std::abs(along - place.along), done);
-        break;
-      }
-      for (int p : placedIn) // back to where it was
-        patches[p].put(v, pointOnEdge(domain, p, place.a, place.b, place.along));
+      return true;
+    };
+    const double fraction = firstSafeFraction(step, [&](double f) {
+      const double along = place.along + f * (target - place.along);
+      if (along > 0.0 && along < 1.0 && placeEverywhere(alongEdge(at.triangle, place, along), true))
+        return true;
+      placeEverywhere(at, false);
+      return false;
+    });
+    if (fraction > 0.0)
+    {
+      const double along = place.along + fraction * (target - place.along);
+      at = alongEdge(at.triangle, place, along);
+      record(std::abs(along - place.along), done);
     }
   }
 }
@@ -407,8 +421,7 @@ Status relaxSampleLocations(const BaseDomain& domain, const std::vector<const Pa
       ringOf[v].push_back(t);
   }
   const std::vector<std::vector<MassPoint>> mass = collectMass(localModels, patchCount);
-  std::vector<double> weight(triangleCount);
-  std::vector<Vec2> moment(triangleCount);
+  BinnedMass binned(3, triangleCount);
   SampleRelaxationReport done;
   for (; done.iterations < options.iterations; ++done.iterations)
   {
@@ -416,11 +429,11 @@ Status relaxSampleLocations(const BaseDomain& domain, const std::vector<const Pa
     patches.reserve(patchCount);
     for (int p = 0; p < patchCount; ++p)
       patches.emplace_back(domain, remesh, trianglesOf[p], p);
-    binMass(mass, patches, communicator, weight, moment);
+    binMass(mass, patches, communicator, binned);
     done.movedVertices = 0;
     done.largestMove = 0.0;
-    moveInsideBaseTriangles(remesh, trianglesOf, ringOf, weight, moment, options.step, patches, done);
-    slideAlongBaseEdges(domain, remesh, ringOf, weight, moment, options.step, patches, done);
+    moveInsideBaseTriangles(remesh, trianglesOf, ringOf, binned, options.step, patches, done);
+    slideAlongBaseEdges(domain, remesh, ringOf, binned, options.step, patches, done);
   }
   if (report)
     *report = done;
