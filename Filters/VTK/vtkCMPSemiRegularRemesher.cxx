@@ -440,11 +440,11 @@ int vtkCMPSemiRegularRemesher::RequestData(
   // One connectivity for the whole collection: with a tolerance, a triangle
   // is split when any model needs it.
   SharedRemesh shared;
-  if (local.ok() && this->AdaptiveTolerance > 0.0)
-    local = cmp::buildAdaptiveSemiRegularMesh(
-      domain, this->Level, cmp::flatnessSplitRule(surfaces, this->AdaptiveTolerance), shared.mesh);
-  else if (local.ok())
-    local = cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
+  if (local.ok())
+    local = this->AdaptiveTolerance > 0.0
+      ? cmp::buildAdaptiveSemiRegularMesh(
+          domain, this->Level, cmp::flatnessSplitRule(surfaces, this->AdaptiveTolerance), shared.mesh)
+      : cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
   if (relax)
     local = cmp::agreeOnStatus(local, communicator);
   if (!local.ok())
