@@ -18,13 +18,8 @@ double relativeHausdorff(const SemiRegularMesh& remesh, const ParameterizedSurfa
 {
   std::vector<SurfaceSample> samples;
   EXPECT_TRUE(placeOnSurface(remesh, surface, samples).ok());
-  TriangleMesh input;
-  for (int v = 0; v < net.mesh.vertexCount(); ++v)
-    input.points.push_back(net.mesh.point(v));
-  for (int t = 0; t < net.mesh.triangleCount(); ++t)
-    input.triangles.push_back(net.mesh.triangle(t));
   const TriangleMesh drawn{ samplePositions(net, samples), remesh.triangles };
-  return surfaceDistance(drawn, input).hausdorff() / surface.boundingBoxDiagonal();
+  return surfaceDistance(drawn, net.mesh.toTriangleMesh()).hausdorff() / surface.boundingBoxDiagonal();
 }
 
 bool strictlyInside(const BaseLocation& at)
@@ -50,6 +45,46 @@ int clockwiseTriangles(const BaseDomain& domain, const SemiRegularMesh& remesh)
   }
   return clockwise;
 }
+
+/// Every vertex's base coordinates the same, bit for bit.
+void expectSameLocations(const SemiRegularMesh& mesh, const SemiRegularMesh& expected)
+{
+  ASSERT_EQ(mesh.vertexCount(), expected.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    ASSERT_EQ(mesh.locations[v].coordinates, expected.locations[v].coordinates) << "vertex " << v;
+}
+
+/// Model 387 parameterized on `L0` from 381, indexed once for the tests
+/// that need a model but not a particular result, and a level-3 remesh.
+class SampleRelaxationOn387 : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    domain_ = new BaseDomain(test::realBaseDomain("381"));
+    indexed_ = new test::IndexedModels;
+    const Status status = test::indexRealModels({ "387" }, *domain_, false, *indexed_);
+    ASSERT_TRUE(status.ok()) << status.message();
+  }
+  static void TearDownTestSuite()
+  {
+    delete indexed_;
+    delete domain_;
+  }
+  void SetUp() override { ASSERT_TRUE(buildSemiRegularMesh(*domain_, 3, mesh).ok()); }
+
+  const BaseDomain& domain() const { return *domain_; }
+  const std::vector<const ParameterizedSurface*>& collection() const { return indexed_->collection; }
+
+  SemiRegularMesh mesh; ///< Level 3, as built.
+
+private:
+  static BaseDomain* domain_;
+  static test::IndexedModels* indexed_;
+};
+
+BaseDomain* SampleRelaxationOn387::domain_ = nullptr;
+test::IndexedModels* SampleRelaxationOn387::indexed_ = nullptr;
 
 } // namespace
 
@@ -172,82 +207,62 @@ TEST(SampleRelaxation, ModelsSpreadOverRanksMoveTheLocationsAsOneProcessDoes)
   }
 }
 
-TEST(SampleRelaxation, RanksWithDifferentRemeshesAllFail)
+TEST_F(SampleRelaxationOn387, RanksWithDifferentRemeshesAllFail)
 {
   // An adaptive remesh refined on each rank's own models differs between
   // ranks: the per-triangle sums would not match, so every rank refuses.
-  const BaseDomain domain = test::realBaseDomain("381");
-  test::IndexedModels indexed;
-  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
   for (bool sameLevelOtherStep : { false, true })
   {
     std::mutex mutex;
     test::runOnRanks(2, [&](Communicator& communicator) {
-      SemiRegularMesh mesh;
+      SemiRegularMesh mine;
       const int level = sameLevelOtherStep ? 3 : 2 + communicator.rank();
-      ASSERT_TRUE(buildSemiRegularMesh(domain, level, mesh).ok());
-      const SemiRegularMesh untouched = mesh;
+      ASSERT_TRUE(buildSemiRegularMesh(domain(), level, mine).ok());
+      const SemiRegularMesh untouched = mine;
       SampleRelaxationOptions options;
       if (sameLevelOtherStep && communicator.rank() == 1)
         options.step = 0.25;
-      const Status status = relaxSampleLocations(domain, indexed.collection, communicator, mesh, options);
+      const Status status = relaxSampleLocations(domain(), collection(), communicator, mine, options);
       const std::lock_guard<std::mutex> lock(mutex);
       EXPECT_FALSE(status.ok());
       EXPECT_NE(status.message().find("different remeshes or with different options"), std::string::npos)
         << status.message();
-      for (int v = 0; v < mesh.vertexCount(); ++v)
-        ASSERT_EQ(mesh.locations[v].coordinates, untouched.locations[v].coordinates);
+      expectSameLocations(mine, untouched);
     });
   }
 }
 
-TEST(SampleRelaxation, ASmallStepStillMoves)
+TEST_F(SampleRelaxationOn387, ASmallStepStillMoves)
 {
-  const BaseDomain domain = test::realBaseDomain("381");
-  test::IndexedModels indexed;
-  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
-  SemiRegularMesh mesh;
-  ASSERT_TRUE(buildSemiRegularMesh(domain, 3, mesh).ok());
   SampleRelaxationOptions options;
   options.iterations = 1;
   options.step = 1e-4;
   SampleRelaxationReport report;
-  ASSERT_TRUE(relaxSampleLocations(domain, indexed.collection, mesh, options, &report).ok());
+  ASSERT_TRUE(relaxSampleLocations(domain(), collection(), mesh, options, &report).ok());
   EXPECT_GT(report.movedVertices, 0);
   EXPECT_GT(report.largestMove, 0.0);
   EXPECT_LT(report.largestMove, 1e-4);
 }
 
-TEST(SampleRelaxation, ZeroRoundsLeaveTheLocationsAlone)
+TEST_F(SampleRelaxationOn387, ZeroRoundsLeaveTheLocationsAlone)
 {
-  const BaseDomain domain = test::realBaseDomain("381");
-  test::IndexedModels indexed;
-  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
-  SemiRegularMesh mesh, untouched;
-  ASSERT_TRUE(buildSemiRegularMesh(domain, 3, mesh).ok());
-  untouched = mesh;
+  const SemiRegularMesh untouched = mesh;
   SampleRelaxationOptions none;
   none.iterations = 0;
   SampleRelaxationReport report;
-  ASSERT_TRUE(relaxSampleLocations(domain, indexed.collection, mesh, none, &report).ok());
+  ASSERT_TRUE(relaxSampleLocations(domain(), collection(), mesh, none, &report).ok());
   EXPECT_EQ(report.iterations, 0);
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    EXPECT_EQ(mesh.locations[v].coordinates, untouched.locations[v].coordinates);
+  expectSameLocations(mesh, untouched);
 }
 
-TEST(SampleRelaxation, BadInputIsNamedAndLeavesTheRemeshAlone)
+TEST_F(SampleRelaxationOn387, BadInputIsNamedAndLeavesTheRemeshAlone)
 {
-  const BaseDomain domain = test::realBaseDomain("381");
-  test::IndexedModels indexed;
-  ASSERT_TRUE(test::indexRealModels({ "387" }, domain, false, indexed).ok());
-  SemiRegularMesh mesh;
-  ASSERT_TRUE(buildSemiRegularMesh(domain, 3, mesh).ok());
   const SemiRegularMesh untouched = mesh;
+  const BaseDomain& domain = this->domain();
   const auto expectError = [&](const Status& status, const std::string& words) {
     ASSERT_FALSE(status.ok()) << "expected an error mentioning '" << words << "'";
     EXPECT_NE(status.message().find(words), std::string::npos) << status.message();
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-      ASSERT_EQ(mesh.locations[v].coordinates, untouched.locations[v].coordinates);
+    expectSameLocations(mesh, untouched);
   };
   expectError(relaxSampleLocations(domain, {}, mesh), "no model");
   const ParameterizedSurface unbuilt;
@@ -255,12 +270,12 @@ TEST(SampleRelaxation, BadInputIsNamedAndLeavesTheRemeshAlone)
   expectError(relaxSampleLocations(domain, { nullptr }, mesh), "missing");
   SampleRelaxationOptions options;
   options.iterations = -1;
-  expectError(relaxSampleLocations(domain, indexed.collection, mesh, options), "negative");
+  expectError(relaxSampleLocations(domain, collection(), mesh, options), "negative");
   for (double step : { 0.0, 1.5, std::nan("") })
   {
     options = {};
     options.step = step;
-    expectError(relaxSampleLocations(domain, indexed.collection, mesh, options), "step");
+    expectError(relaxSampleLocations(domain, collection(), mesh, options), "step");
   }
   // A vertex whose base location is not in the base triangle of its triangle.
   SemiRegularMesh misplaced = mesh;
@@ -268,7 +283,7 @@ TEST(SampleRelaxation, BadInputIsNamedAndLeavesTheRemeshAlone)
   ASSERT_TRUE(std::all_of(mesh.locations[inside].coordinates.begin(), mesh.locations[inside].coordinates.end(),
     [](double c) { return c > 0.0; }));
   misplaced.locations[inside].triangle = (mesh.locations[inside].triangle + 1) % domain.mesh.triangleCount();
-  const Status outside = relaxSampleLocations(domain, indexed.collection, misplaced);
+  const Status outside = relaxSampleLocations(domain, collection(), misplaced);
   EXPECT_FALSE(outside.ok());
   EXPECT_NE(outside.message().find("does not lie in the base triangle of its triangle"), std::string::npos)
     << outside.message();
@@ -276,7 +291,7 @@ TEST(SampleRelaxation, BadInputIsNamedAndLeavesTheRemeshAlone)
   // A remesh of a larger base domain names base triangles this one lacks.
   SemiRegularMesh foreign = mesh;
   foreign.patchOfTriangle.back() = domain.mesh.triangleCount();
-  ASSERT_FALSE(relaxSampleLocations(domain, indexed.collection, foreign).ok());
+  ASSERT_FALSE(relaxSampleLocations(domain, collection(), foreign).ok());
   EXPECT_EQ(foreign.locations[mesh.vertexCount() - 1].coordinates, untouched.locations[mesh.vertexCount() - 1].coordinates);
 
   // Over ranks: no rank has a model, or one rank's input is bad; every rank says so.
@@ -289,7 +304,7 @@ TEST(SampleRelaxation, BadInputIsNamedAndLeavesTheRemeshAlone)
       if (badOnRankOne && communicator.rank() == 1)
         mine.iterations = -3;
       const std::vector<const ParameterizedSurface*> local =
-        badOnRankOne ? indexed.collection : std::vector<const ParameterizedSurface*>{};
+        badOnRankOne ? collection() : std::vector<const ParameterizedSurface*>{};
       const Status status = relaxSampleLocations(domain, local, communicator, copy, mine);
       const std::lock_guard<std::mutex> lock(mutex);
       EXPECT_FALSE(status.ok());

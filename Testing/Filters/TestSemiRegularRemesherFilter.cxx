@@ -365,6 +365,20 @@ void expectRemeshed(vtkPolyData* remesh, vtkPolyData* original, vtkPolyData* inp
   EXPECT_EQ(badId, 0) << what << ": vtkOriginalPointIds not copied from a surrounding point";
 }
 
+/// SHREC'07 models of `folder` straightened on `l0`, as a multiblock of
+/// blocks named after them.
+vtkSmartPointer<vtkMultiBlockDataSet> parameterizedGroup(
+  const std::string& folder, const std::vector<std::string>& models, vtkPolyData* l0)
+{
+  auto group = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  for (unsigned int b = 0; b < models.size(); ++b)
+  {
+    group->SetBlock(b, parameterized(readLandmarked(folder + models[b] + ".off", folder + models[b] + ".vts"), l0));
+    group->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), models[b].c_str());
+  }
+  return group;
+}
+
 int countProgress(vtkAlgorithm* algorithm, int& counter)
 {
   vtkNew<vtkCallbackCommand> onProgress;
@@ -577,12 +591,7 @@ TEST(SemiRegularRemesherFilter, AdaptiveRemeshIsSharedByTheWholeMultiblock)
   const std::string folder = sharedDataDir() + "/shrec07-fourleg/";
   vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(readLandmarked(folder + "381.off", folder + "381.vts"));
   const std::vector<std::string> models = { "381", "387" };
-  vtkNew<vtkMultiBlockDataSet> group;
-  for (unsigned int b = 0; b < models.size(); ++b)
-  {
-    group->SetBlock(b, parameterized(readLandmarked(folder + models[b] + ".off", folder + models[b] + ".vts"), l0));
-    group->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), models[b].c_str());
-  }
+  vtkSmartPointer<vtkMultiBlockDataSet> group = parameterizedGroup(folder, models, l0);
   const int maximumLevel = 5;
   vtkNew<vtkCMPSemiRegularRemesher> remesher;
   remesher->SetInputData(0, group);
@@ -631,9 +640,7 @@ TEST(SemiRegularRemesherFilter, SampleRelaxationMovesOneSetOfLocationsForTheWhol
   const std::string folder = sharedDataDir() + "/shrec07-fourleg/";
   vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(readLandmarked(folder + "381.off", folder + "381.vts"));
   const std::vector<std::string> models = { "381", "389" };
-  vtkNew<vtkMultiBlockDataSet> group;
-  for (unsigned int b = 0; b < models.size(); ++b)
-    group->SetBlock(b, parameterized(readLandmarked(folder + models[b] + ".off", folder + models[b] + ".vts"), l0));
+  vtkSmartPointer<vtkMultiBlockDataSet> group = parameterizedGroup(folder, models, l0);
   const auto remesh = [&](int rounds, vtkSmartPointer<vtkMultiBlockDataSet>& blocks,
                         vtkSmartPointer<vtkPolyData>& connectivity)
   {
