@@ -586,8 +586,8 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
 {
   if (Status status = checkSamples(remesh, surface, samples); !status.ok())
     return status;
-  if (!(options.reach >= 0.0) || options.maximumSweeps < 0)
-    return Status::error("fold repair: the reach must be >= 0 and the sweeps >= 0");
+  if (!(options.reach >= 0.0) || options.maximumSweeps < 0 || options.regionWidening < 1)
+    return Status::error("fold repair: the reach must be >= 0, the sweeps >= 0 and the region widening >= 1");
   FoldRepairReport result;
   result.foldedBefore = result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   if (result.foldedBefore > 0)
@@ -607,8 +607,9 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       if (!any)
         break;
     }
-    if (mesh.foldedCount() > 0)
-      untangle(surface, mesh, origin, options.reach * kTypicalEdgeShare * medianEdge);
+    const double regionReach = options.reach * kTypicalEdgeShare * medianEdge;
+    for (int widening = 1; widening <= options.regionWidening && mesh.foldedCount() > 0; ++widening)
+      untangle(surface, mesh, origin, widening * regionReach);
     writeBack(surface, mesh, placed, origin, samples, result);
     result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   }

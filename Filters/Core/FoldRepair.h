@@ -19,10 +19,19 @@ struct FoldRepairOptions
   int maximumSweeps = 20;
   /// \brief How far a vertex may go from where its parameterization put
   ///        it: this many times its shortest remesh edge (as placed) when
-  ///        it moves alone, and never more than this many quarters of the
-  ///        remesh's median edge, also when moved with its region. So the
-  ///        correspondence moves less than the remesh's own resolution.
+  ///        it moves alone, never more than this many quarters of the
+  ///        remesh's median edge; the same quarters of the median edge
+  ///        when it first moves with its region. 0: nothing moves.
   double reach = 2.0;
+  /// \brief Where moving regions within `reach` quarters of the median
+  ///        edge leaves folds, they try again within 2, 3, ... up to this
+  ///        many times that (by default: half a median edge, then one, one
+  ///        and a half, two). A fold where the layout's curves leave a
+  ///        landmark bunched (a fan of needles) needs moves of one or two
+  ///        edges; every other fold keeps the least move that unfolds it,
+  ///        and the correspondence moves by at most two remesh edges.
+  ///        1: regions never go beyond the first reach.
+  int regionWidening = 4;
 };
 
 /// \brief What `repairFolds()` did.
@@ -62,7 +71,8 @@ std::vector<char> foldedTriangles(
 /// scale of several triangles, where each single move folds a neighbour),
 /// the vertices within five rings of the remaining folds move together
 /// down the gradient of a penalty on thin and folded triangles, and the
-/// state with fewest folds is kept. Landmark samples never move. Every
+/// state with fewest folds is kept; while folds remain, again with a wider
+/// reach (`regionWidening`). Landmark samples never move. Every
 /// moved sample still names the surface triangle it lies in. Fails,
 /// changing nothing, on samples that do not fit `remesh` and `surface`.
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,

@@ -118,8 +118,9 @@ public:
   ///        (default on). A thin triangle on a curved part can tip over
   ///        even though the parameterization is bijective; the vertices of
   ///        such triangles are slid along the surface (alone, then with
-  ///        their neighbours), never more than half the median edge, until
-  ///        their triangles agree with the surface or no short move helps.
+  ///        their neighbours), never more than two median edges (half of
+  ///        one where that suffices), until their triangles agree with the
+  ///        surface or no short move helps.
   ///        Landmarks never move. A moved
   ///        vertex is no longer exactly at its `BaseCoordinates` on that
   ///        model; turn off to keep every vertex exactly there.

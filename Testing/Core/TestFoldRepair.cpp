@@ -136,6 +136,10 @@ TEST(FoldRepair, RefusesSamplesThatDoNotFitTheRemesh)
   FoldRepairOptions negative;
   negative.reach = -1.0;
   EXPECT_NE(repairFolds(remesh, model.net.mesh, placed.samples, negative).message().find("reach"), std::string::npos);
+  FoldRepairOptions narrowing;
+  narrowing.regionWidening = 0;
+  EXPECT_NE(repairFolds(remesh, model.net.mesh, placed.samples, narrowing).message().find("region widening"),
+    std::string::npos);
 
   const int v = remesh.vertexCount() - 1;
   const auto refused = [&](std::vector<SurfaceSample> samples, const std::string& fragment)
@@ -213,8 +217,9 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
   const BaseDomain domain = test::realBaseDomain("381");
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
-  // Measured at level 5 with L0 from 381: 417 -> 28 on Spot (its two
-  // thin wedge patches keep the rest), 59 -> 4 on 391.
+  // Measured at level 5 with L0 from 381: 417 -> 15 on Spot (its two
+  // thin wedge patches keep the rest), 59 -> 1 on 391; without widening
+  // the regions' reach, 28 and 4.
   for (const std::string name : { "spot", "391" })
   {
     const test::LandmarkedModel model = test::landmarkedRealModel(name);
@@ -227,7 +232,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     EXPECT_EQ(report.foldedBefore, countFoldedTriangles(remesh, parameterized.net.mesh, placed.samples)) << name;
     EXPECT_EQ(report.foldedAfter, countFoldedTriangles(remesh, parameterized.net.mesh, samples)) << name;
     EXPECT_GT(report.foldedBefore, 50) << name;
-    EXPECT_LT(report.foldedAfter, (name == "spot" ? 0.12 : 0.1) * report.foldedBefore) << name;
+    EXPECT_LT(report.foldedAfter, 0.05 * report.foldedBefore) << name;
 
     const std::vector<Vec3> repaired = samplePositions(parameterized.net, samples);
     const double diagonal = boundingBoxDiagonal(model.data.mesh);
@@ -246,9 +251,9 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
       ++moved;
       EXPECT_GE(v, domain.mesh.vertexCount()) << name << ": landmark " << v << " moved";
       EXPECT_LT(input.closest(repaired[v]).distance, 1e-6 * diagonal) << name << " vertex " << v;
-      // Within half the median edge (FoldRepairOptions::reach 2 times a
-      // quarter of it), whether moved alone or with its region.
-      EXPECT_LE((repaired[v] - placed.positions[v]).norm(), 0.5 * medianEdge * 1.01) << name << " vertex " << v;
+      // Within two median edges (FoldRepairOptions::reach 2 times a
+      // quarter of it, widened up to 4 times), alone or with its region.
+      EXPECT_LE((repaired[v] - placed.positions[v]).norm(), 2.0 * medianEdge * 1.01) << name << " vertex " << v;
     }
     EXPECT_EQ(moved, report.movedVertices) << name;
     EXPECT_LE(report.foldedAfter, report.foldedBefore) << name;
@@ -277,7 +282,18 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     const double hausdorffBefore = surfaceDistance(before, model.data.mesh).hausdorff() / diagonal;
     const double hausdorffAfter = surfaceDistance(after, model.data.mesh).hausdorff() / diagonal;
     EXPECT_LT(hausdorffAfter, hausdorffBefore + 0.003) << name;
-    std::cout << name << ": " << report.foldedBefore << " -> " << report.foldedAfter << " folded triangles, "
+
+    // Without widening, regions stay within half the median edge and leave
+    // more folds.
+    FoldRepairOptions narrow;
+    narrow.regionWidening = 1;
+    std::vector<SurfaceSample> narrowSamples = placed.samples;
+    FoldRepairReport narrowReport;
+    ASSERT_TRUE(repairFolds(remesh, parameterized.net.mesh, narrowSamples, narrow, &narrowReport).ok()) << name;
+    EXPECT_GT(narrowReport.foldedAfter, report.foldedAfter) << name;
+    EXPECT_LE(narrowReport.largestMove, 0.5 * medianEdge * 1.01) << name;
+    std::cout << name << ": " << report.foldedBefore << " -> " << report.foldedAfter << " folded triangles ("
+              << narrowReport.foldedAfter << " without widening), "
               << report.movedVertices << " vertices moved, at most " << report.largestMove / diagonal
               << " of the diagonal; Hausdorff distance " << hausdorffBefore << " -> " << hausdorffAfter << "\n";
   }

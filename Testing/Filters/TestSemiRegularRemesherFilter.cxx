@@ -555,17 +555,18 @@ TEST(SemiRegularRemesherFilter, RepairFoldsUnfoldsMostOfSpotsFoldsAndCanBeTurned
   auto* exact = vtkPolyData::SafeDownCast(remesher->GetOutputDataObject(0));
   ASSERT_NE(exact, nullptr);
 
-  // Measured: 417 folded triangles, 28 after repair (Spot's two thin
-  // wedge patches keep the rest).
+  // Measured: 417 folded triangles, 15 after repair (Spot's two thin
+  // wedge patches keep the rest; 28 without widening the regions' reach).
   const double before = fieldValue(exact, "FlippedTriangles");
   EXPECT_EQ(fieldValue(exact, "FoldedBeforeRepair"), before);
   EXPECT_EQ(fieldValue(exact, "RepairedVertices"), 0.0);
   EXPECT_EQ(fieldValue(repaired, "FoldedBeforeRepair"), before);
   EXPECT_GT(before, 300.0);
-  EXPECT_LT(fieldValue(repaired, "FlippedTriangles"), 0.12 * before);
+  EXPECT_LT(fieldValue(repaired, "FlippedTriangles"), 0.05 * before);
   expectSameConnectivity(exact, repaired, "repaired");
 
-  // Only the vertices it reports moved, by less than a typical edge.
+  // Only the vertices it reports moved, by at most two median remesh edges
+  // (measured: 0.54% of the diagonal).
   int moved = 0;
   double farthest = 0.0;
   for (vtkIdType v = 0; v < exact->GetNumberOfPoints(); ++v)
@@ -578,7 +579,7 @@ TEST(SemiRegularRemesherFilter, RepairFoldsUnfoldsMostOfSpotsFoldsAndCanBeTurned
   }
   EXPECT_EQ(moved, fieldValue(repaired, "RepairedVertices"));
   EXPECT_GT(moved, 0);
-  EXPECT_LT(farthest, 0.005 * diagonalOf(spot));
+  EXPECT_LT(farthest, 0.008 * diagonalOf(spot));
   std::cout << "spot at level 5: " << before << " folded triangles, " << fieldValue(repaired, "FlippedTriangles")
             << " after moving " << moved << " vertices by at most " << farthest / diagonalOf(spot)
             << " of the diagonal; Hausdorff " << fieldValue(exact, "HausdorffDistanceRelative") << " -> "
