@@ -20,7 +20,8 @@ namespace
 constexpr int kDirections = 16;
 constexpr double kStepFractions[] = { 0.05, 0.1, 0.2, 0.4, 0.8 };
 /// A vertex's reach is counted in its shortest edge, but never in more than
-/// this share of the remesh's median edge.
+/// this share of the remesh's median edge; a region's first reach is that
+/// share too.
 constexpr double kTypicalEdgeShare = 0.25;
 /// Shape quality below which a triangle counts as bad while repairing, so
 /// that unfolding never pays with a collapsed triangle.
@@ -32,6 +33,8 @@ constexpr int kUntangledRings = 5;
 constexpr int kUntangleIterations = 300;
 constexpr int kBacktrackingSteps = 12;
 constexpr double kFatEnough = 0.05;
+/// Most widenings of the regions' reach accepted (each is one more pass).
+constexpr int kMostRegionWidening = 64;
 
 /// Shape quality of triangle (a, b, c) (1 when equilateral, 0 when flat),
 /// negative when it faces against `under`; 1 when `under` is zero (all
@@ -518,11 +521,11 @@ double medianEdgeLength(const FoldedRemesh& mesh)
   return lengths[lengths.size() / 2];
 }
 
-/// How far each vertex may go alone: `reach` shortest edges, but at most a
-/// `reach` quarter of the median edge. Long edges mean a coarsely sampled
-/// part (a tip, a ridge), where moving a vertex by its own edge length would
-/// cut into the shape.
-std::vector<double> singleMoveReach(const FoldedRemesh& mesh, double reach, double medianEdge)
+/// How far each vertex may go alone: `reach` shortest edges, but at most
+/// `reach` typical edges (a quarter of the median edge). Long edges mean a
+/// coarsely sampled part (a tip, a ridge), where moving a vertex by its own
+/// edge length would cut into the shape.
+std::vector<double> singleMoveReach(const FoldedRemesh& mesh, double reach, double typicalEdge)
 {
   std::vector<double> result(mesh.vertexCount(), 0.0);
   for (int v = 0; v < mesh.vertexCount(); ++v)
@@ -531,7 +534,7 @@ std::vector<double> singleMoveReach(const FoldedRemesh& mesh, double reach, doub
     for (int w : mesh.neighbours(v))
       shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
     if (std::isfinite(shortest))
-      result[v] = reach * std::min(shortest, kTypicalEdgeShare * medianEdge);
+      result[v] = reach * std::min(shortest, typicalEdge);
   }
   return result;
 }
@@ -586,8 +589,11 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
 {
   if (Status status = checkSamples(remesh, surface, samples); !status.ok())
     return status;
-  if (!(options.reach >= 0.0) || options.maximumSweeps < 0 || options.regionWidening < 1)
-    return Status::error("fold repair: the reach must be >= 0, the sweeps >= 0 and the region widening >= 1");
+  if (!(options.reach >= 0.0) || options.maximumSweeps < 0)
+    return Status::error("fold repair: the reach must be >= 0 and the sweeps >= 0");
+  if (options.regionWidening < 1 || options.regionWidening > kMostRegionWidening)
+    return Status::error("fold repair: the region widening must be between 1 and " +
+      std::to_string(kMostRegionWidening) + ", not " + std::to_string(options.regionWidening));
   FoldRepairReport result;
   result.foldedBefore = result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   if (result.foldedBefore > 0)
@@ -597,8 +603,8 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
     std::vector<TrianglePoint> placed;
     for (int v = 0; v < mesh.vertexCount(); ++v)
       origin.push_back(mesh.position(v)), placed.push_back(mesh.point(v));
-    const double medianEdge = medianEdgeLength(mesh);
-    const std::vector<double> reach = singleMoveReach(mesh, options.reach, medianEdge);
+    const double typicalEdge = kTypicalEdgeShare * medianEdgeLength(mesh);
+    const std::vector<double> reach = singleMoveReach(mesh, options.reach, typicalEdge);
     for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
     {
       bool any = false;
@@ -607,7 +613,7 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       if (!any)
         break;
     }
-    const double regionReach = options.reach * kTypicalEdgeShare * medianEdge;
+    const double regionReach = options.reach * typicalEdge;
     for (int widening = 1; widening <= options.regionWidening && mesh.foldedCount() > 0; ++widening)
       untangle(surface, mesh, origin, widening * regionReach);
     writeBack(surface, mesh, placed, origin, samples, result);

@@ -24,13 +24,16 @@ struct FoldRepairOptions
   ///        when it first moves with its region. 0: nothing moves.
   double reach = 2.0;
   /// \brief Where moving regions within `reach` quarters of the median
-  ///        edge leaves folds, they try again within 2, 3, ... up to this
-  ///        many times that (by default: half a median edge, then one, one
-  ///        and a half, two). A fold where the layout's curves leave a
-  ///        landmark bunched (a fan of needles) needs moves of one or two
-  ///        edges; every other fold keeps the least move that unfolds it,
-  ///        and the correspondence moves by at most two remesh edges.
-  ///        1: regions never go beyond the first reach.
+  ///        edge leaves folds, the regions around the remaining ones try
+  ///        again within 2, 3, ... up to this many times that (by default:
+  ///        half a median edge, then one, one and a half, two). A fold
+  ///        where the layout's curves leave a landmark bunched (a fan of
+  ///        needles) needs moves of one or two edges; folds unfolded at a
+  ///        smaller reach move no further unless they lie within five rings
+  ///        of one that remains. The correspondence moves by at most `reach`
+  ///        x `regionWidening` quarters of the median edge (two median
+  ///        edges by default). 1 to 64; 1: regions never go beyond the
+  ///        first reach.
   int regionWidening = 4;
 };
 
@@ -71,8 +74,9 @@ std::vector<char> foldedTriangles(
 /// scale of several triangles, where each single move folds a neighbour),
 /// the vertices within five rings of the remaining folds move together
 /// down the gradient of a penalty on thin and folded triangles, and the
-/// state with fewest folds is kept; while folds remain, again with a wider
-/// reach (`regionWidening`). Landmark samples never move. Every
+/// state with fewest folds is kept; while folds remain, again within 2, 3,
+/// ... `regionWidening` times the first reach. Landmark samples never
+/// move. Every
 /// moved sample still names the surface triangle it lies in. Fails,
 /// changing nothing, on samples that do not fit `remesh` and `surface`.
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
