@@ -12,7 +12,7 @@ Usage: pvpython render_bunched_curves.py PLUGIN.so DATA_DIR OUTPUT.png
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import aim, landmarked_shrec, show_grey, side_by_side
+from render_common import aim, landmarked_shrec, show_curves, show_folds, show_grey, side_by_side
 
 plugin, data, output = sys.argv[1:4]
 LoadPlugin(plugin, ns=globals())
@@ -28,22 +28,11 @@ remesher = SemiRegularRemesher(Input=straightener, BaseDomain=base, Level=5, Com
 layout, (left, right) = side_by_side("bunched curves")
 
 show_grey(OutputPort(straightener, 0), left, edges=False)
-for port, colour, width in ((OutputPort(tracer, 1), 0.6, 2), (OutputPort(straightener, 1), 0.05, 3)):
-    curves = Show(port, left)
-    curves.SetRepresentationType("Wireframe")
-    curves.ColorArrayName = [None, ""]
-    curves.AmbientColor = curves.DiffuseColor = [colour] * 3
-    curves.LineWidth = width
+show_curves(OutputPort(tracer, 1), left, 0.6, 2)
+show_curves(OutputPort(straightener, 1), left, 0.05, 3)
 
 show_grey(OutputPort(remesher, 0), right)
-folds = Threshold(Input=OutputPort(remesher, 0), Scalars=["CELLS", "Folded"])
-folds.LowerThreshold, folds.UpperThreshold = 0.5, 1.5
-# Folded triangles are needles, too thin to see filled: thick red outlines.
-shown = Show(folds, right)
-shown.SetRepresentationType("Wireframe")
-shown.ColorArrayName = [None, ""]
-shown.AmbientColor = shown.DiffuseColor = [0.9, 0.05, 0.05]
-shown.LineWidth = 3
+show_folds(OutputPort(remesher, 0), right)
 
 for view in (left, right):
     marker = Show(Sphere(Center=list(landmark), Radius=0.004), view)

@@ -1,6 +1,7 @@
 """What the documentation pictures share: white render views without axes,
-two of them side by side, a grey remesh, a camera aimed in one call."""
-from paraview.simple import AssignViewToLayout, CreateLayout, CreateView, Show
+two of them side by side, a grey remesh, curves, folded triangles in red, a
+camera aimed in one call."""
+from paraview.simple import AssignViewToLayout, CreateLayout, CreateView, Show, Threshold
 
 
 def white_view(width, height):
@@ -47,6 +48,30 @@ def show_grey(port, view, edges=True):
     shown.DiffuseColor = [0.85, 0.85, 0.85]
     if edges:
         shown.EdgeColor = [0.25, 0.25, 0.25]
+    return shown
+
+
+def show_curves(port, view, grey, width):
+    """The polylines of `port` (a layout's curves) in the grey level `grey`
+    (0 black, 1 white), `width` pixels wide."""
+    shown = Show(port, view)
+    shown.SetRepresentationType("Wireframe")
+    shown.ColorArrayName = [None, ""]
+    shown.AmbientColor = shown.DiffuseColor = [grey] * 3
+    shown.LineWidth = width
+    return shown
+
+
+def show_folds(remesh, view):
+    """The triangles of `remesh` that face against their surface (cell array
+    Folded) as thick red outlines: they are needles, too thin to see filled."""
+    folds = Threshold(Input=remesh, Scalars=["CELLS", "Folded"])
+    folds.LowerThreshold, folds.UpperThreshold = 0.5, 1.5
+    shown = Show(folds, view)
+    shown.SetRepresentationType("Wireframe")
+    shown.ColorArrayName = [None, ""]
+    shown.AmbientColor = shown.DiffuseColor = [0.9, 0.05, 0.05]
+    shown.LineWidth = 3
     return shown
 
 

@@ -9,7 +9,7 @@ Usage: pvpython render_fold_repair.py PLUGIN.so DATA_DIR OUTPUT.png
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import aim, landmarked_shrec, show_grey, side_by_side
+from render_common import aim, landmarked_shrec, show_folds, show_grey, side_by_side
 
 plugin, data, output = sys.argv[1:4]
 LoadPlugin(plugin, ns=globals())
@@ -24,15 +24,7 @@ for view, repair in zip(views, (0, 1)):
     remesher = SemiRegularRemesher(Input=straightener, BaseDomain=base, Level=5, RepairFolds=repair,
                                    ComputeDistance=0)
     show_grey(OutputPort(remesher, 0), view, edges=False)
-    # Folded triangles are needles, too thin to see filled: drawn as thick
-    # red outlines over the surface.
-    folds = Threshold(Input=OutputPort(remesher, 0), Scalars=["CELLS", "Folded"])
-    folds.LowerThreshold, folds.UpperThreshold = 0.5, 1.5
-    outlined = Show(folds, view)
-    outlined.SetRepresentationType("Wireframe")
-    outlined.ColorArrayName = [None, ""]
-    outlined.AmbientColor = outlined.DiffuseColor = [0.9, 0.05, 0.05]
-    outlined.LineWidth = 3
+    show_folds(OutputPort(remesher, 0), view)
     # From below, a little from the front: the belly and the front legs.
     aim(view, (0.0, -0.15, -0.1), (0.5, -1.3, 0.2), up=(0, 0, -1), angle=30)
 SaveScreenshot(output, layout, ImageResolution=[1400, 600])

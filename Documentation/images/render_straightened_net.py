@@ -8,7 +8,7 @@ Usage: pvpython render_straightened_net.py PLUGIN.so DATA_DIR MODEL OUTPUT.png
 import sys
 
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import landmarked_shrec, white_view
+from render_common import landmarked_shrec, show_curves, white_view
 
 plugin, data, model, output = sys.argv[1:5]
 LoadPlugin(plugin, ns=globals())
@@ -27,12 +27,8 @@ lut.ApplyPreset("Rainbow Uniform", True)
 lut.RescaleTransferFunction(0, 37)
 patches.SetScalarBarVisibility(view, False)
 
-for port, colour, width in ((OutputPort(tracer, 1), 0.55, 1.5), (OutputPort(straightener, 1), 0.05, 3)):
-    curves = Show(port, view)
-    curves.SetRepresentationType("Wireframe")
-    curves.ColorArrayName = [None, ""]
-    curves.AmbientColor = curves.DiffuseColor = [colour] * 3
-    curves.LineWidth = width
+show_curves(OutputPort(tracer, 1), view, 0.55, 1.5)
+show_curves(OutputPort(straightener, 1), view, 0.05, 3)
 
 view.CameraPosition = [0.6, -0.5, 3.0]
 view.CameraViewUp = [0, 1, 0]
