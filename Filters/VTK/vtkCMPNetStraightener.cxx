@@ -1,5 +1,6 @@
 #include "vtkCMPNetStraightener.h"
 
+#include "CurveSpread.h"
 #include "LayoutValidator.h"
 #include "NetStraightener.h"
 #include "PatchLayout.h"
@@ -232,6 +233,8 @@ int vtkCMPNetStraightener::RequestData(
   curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(straight.net, domain));
   // Scale-free, like the tracer's NetLengthPerSqrtArea: the area is unchanged.
   const double lengthPerSqrtArea = report.netLengthAfter / std::sqrt(cmp::surfaceArea(mesh));
+  const cmp::CurveGap widestGap = cmp::widestCurveGap(straight.net);
+  const int widestGapFeature = widestGap.baseVertex >= 0 ? domain.featureIds[widestGap.baseVertex] : -1;
   for (vtkPolyData* output : { surfaceOutput, curvesOutput })
   {
     vtkFieldData* field = output->GetFieldData();
@@ -244,6 +247,8 @@ int vtkCMPNetStraightener::RequestData(
     cmp::bridge::setFieldValue(field, "SkippedStars", report.skippedStars);
     cmp::bridge::setFieldValue(field, "FlippedTriangles", parameterization.flippedTriangles);
     cmp::bridge::setFieldValue(field, "SmallestAreaRatio", parameterization.smallestAreaRatio);
+    cmp::bridge::setFieldValue(field, "WidestCurveGap", widestGap.degrees);
+    cmp::bridge::setFieldValue(field, "WidestCurveGapFeature", widestGapFeature);
     cmp::bridge::setFieldValue(field, "NetValid", problem.empty() ? 1 : 0);
     // The outputs are built anew: keep the model's name for the remesher.
     cmp::bridge::copySourceFile(input, output);

@@ -13,24 +13,6 @@ using namespace cmp;
 namespace
 {
 
-/// The octahedron as a base domain, its vertices the features in order.
-BaseDomain orderedOctahedronDomain()
-{
-  const TriangleMesh octahedron = test::octahedron();
-  return BaseDomain{ octahedron, { 0, 1, 2, 3, 4, 5 } };
-}
-
-/// The unit sphere subdivided `levels` times, landmarked at the octahedron's
-/// vertices and parameterized on `domain`.
-Status parameterizedSphere(const BaseDomain& domain, int levels, test::ParameterizedModel& model)
-{
-  test::LandmarkedModel sphere{ "sphere", {}, {} };
-  sphere.data.mesh = test::sphere(levels);
-  for (const Vec3& direction : domain.mesh.points)
-    sphere.landmarks.push_back(test::nearestVertex(sphere.data.mesh, direction));
-  return test::parameterizeOnDomain(sphere, domain, model);
-}
-
 /// The remesh vertices joined to `v` by an edge.
 std::vector<int> neighboursOf(const SemiRegularMesh& remesh, int v)
 {
@@ -82,9 +64,9 @@ int tangleLastVertex(const SemiRegularMesh& remesh, const Placed& placed, std::v
 
 TEST(FoldRepair, UnfoldsAVertexPushedAcrossItsNeighbourWithinReach)
 {
-  const BaseDomain domain = orderedOctahedronDomain();
+  const BaseDomain domain = test::orderedOctahedronDomain();
   test::ParameterizedModel model;
-  ASSERT_TRUE(parameterizedSphere(domain, 4, model).ok());
+  ASSERT_TRUE(test::parameterizedSphere(domain, 4, model).ok());
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 3, remesh).ok());
   Placed placed = place(remesh, domain, model);
@@ -121,9 +103,9 @@ TEST(FoldRepair, UnfoldsAVertexPushedAcrossItsNeighbourWithinReach)
 
 TEST(FoldRepair, RefusesSamplesThatDoNotFitTheRemesh)
 {
-  const BaseDomain domain = orderedOctahedronDomain();
+  const BaseDomain domain = test::orderedOctahedronDomain();
   test::ParameterizedModel model;
-  ASSERT_TRUE(parameterizedSphere(domain, 2, model).ok());
+  ASSERT_TRUE(test::parameterizedSphere(domain, 2, model).ok());
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 1, remesh).ok());
   Placed placed = place(remesh, domain, model);
@@ -181,9 +163,9 @@ TEST(FoldRepair, RefusesSamplesThatDoNotFitTheRemesh)
 
 TEST(FoldRepair, LeavesAnUnfoldedRemeshAndAReachOfZeroAlone)
 {
-  const BaseDomain domain = orderedOctahedronDomain();
+  const BaseDomain domain = test::orderedOctahedronDomain();
   test::ParameterizedModel model;
-  ASSERT_TRUE(parameterizedSphere(domain, 3, model).ok());
+  ASSERT_TRUE(test::parameterizedSphere(domain, 3, model).ok());
   for (int level : { 0, 3 })
   {
     SemiRegularMesh remesh;

@@ -183,6 +183,20 @@ Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& doma
   return {};
 }
 
+BaseDomain orderedOctahedronDomain()
+{
+  return BaseDomain{ octahedron(), { 0, 1, 2, 3, 4, 5 } };
+}
+
+Status parameterizedSphere(const BaseDomain& domain, int levels, ParameterizedModel& model)
+{
+  LandmarkedModel sphere{ "sphere", {}, {} };
+  sphere.data.mesh = test::sphere(levels);
+  for (const Vec3& direction : domain.mesh.points)
+    sphere.landmarks.push_back(nearestVertex(sphere.data.mesh, direction));
+  return parameterizeOnDomain(sphere, domain, model);
+}
+
 std::vector<std::string> landmarkedFourLeggedModels()
 {
   std::vector<std::string> models;

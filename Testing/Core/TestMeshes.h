@@ -85,6 +85,13 @@ struct ParameterizedModel
 /// \brief Traces, straightens and parameterizes `model` on `domain`.
 Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out);
 
+/// \brief The octahedron as a base domain, its vertices the features in order.
+BaseDomain orderedOctahedronDomain();
+
+/// \brief The unit sphere subdivided `levels` times, landmarked at the
+///        vertices of `domain` (unit directions) and parameterized on it.
+Status parameterizedSphere(const BaseDomain& domain, int levels, ParameterizedModel& model);
+
 /// \brief Real models parameterized on one base domain and indexed for
 ///        remeshing; `collection` is what a split rule or the sample
 ///        relaxation takes.

@@ -85,6 +85,14 @@ void expectStraightened(vtkCMPNetStraightener* straightener, vtkPolyData* origin
     << what;
   for (const char* name : { "NetLengthBefore", "AreaVariationAfter", "SkippedStars" })
     EXPECT_FALSE(std::isnan(fieldValue(surface, name))) << what << ": " << name;
+  // The widest angle between curves at a landmark: at least 360 / 8 (no
+  // L0 here has a vertex of valence above 8), less than a full turn; the
+  // same on both outputs.
+  EXPECT_GE(fieldValue(surface, "WidestCurveGap"), 45.0) << what;
+  EXPECT_LT(fieldValue(surface, "WidestCurveGap"), 360.0) << what;
+  EXPECT_EQ(fieldValue(curves, "WidestCurveGap"), fieldValue(surface, "WidestCurveGap")) << what;
+  EXPECT_GE(fieldValue(surface, "WidestCurveGapFeature"), 0.0) << what;
+  EXPECT_LT(fieldValue(surface, "WidestCurveGapFeature"), baseVertices) << what;
   EXPECT_NEAR(areaOf(surface), areaOf(original), 1e-9 * areaOf(original)) << what;
 
   // Point data: the probe interpolated exactly, FeatureId only at landmarks

@@ -180,7 +180,8 @@ def check_models_ok(report, pairs, what):
 
 
 STRAIGHTEN_KEYS = ("net_length_before", "net_length_after", "area_variation_before", "area_variation_after",
-                   "sweeps", "flipped_triangles", "net_valid")
+                   "sweeps", "flipped_triangles", "widest_curve_gap_degrees", "widest_curve_gap_landmark",
+                   "net_valid")
 
 
 def check_straightened(out, name, model, landmarks=21, flips_allowed=False):
@@ -195,6 +196,8 @@ def check_straightened(out, name, model, landmarks=21, flips_allowed=False):
     check(0 < figures["net_length_after"] <= 1.02 * figures["net_length_before"],
           name + ": net length %s -> %s" % (figures["net_length_before"], figures["net_length_after"]))
     check(figures["area_variation_before"] >= 0 and figures["area_variation_after"] >= 0, name + ": area variation")
+    check(45.0 <= figures["widest_curve_gap_degrees"] < 360.0 and 0 <= figures["widest_curve_gap_landmark"] < landmarks,
+          "%s: widest curve gap %r" % (name, figures))
     # A known crowding problem can flip a few triangles on model 385.
     if not flips_allowed:
         check_equal(figures["flipped_triangles"], 0, name + ": flipped_triangles")
