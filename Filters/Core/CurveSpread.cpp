@@ -30,8 +30,9 @@ Vec3 vertexNormal(const EditableMesh& mesh, int v)
   return normal;
 }
 
-/// The point of `curve` (mesh vertices, starting at the landmark) `reach`
-/// along it, or half-way if the curve is shorter than twice that.
+/// The first vertex of `curve` (mesh vertices, starting at the landmark) at
+/// least `reach` along it, or at least half-way if the curve is shorter
+/// than twice that.
 Vec3 pointAlong(const EditableMesh& mesh, const std::vector<int>& curve, double reach)
 {
   const double wanted = std::min(reach, 0.5 * curveLength(mesh, curve));
@@ -72,6 +73,8 @@ std::vector<double> largestCurveGaps(const TracedNet& net, double reach)
     for (int end = 0; end < 2; ++end)
     {
       const int base = net.baseEdges[e][end];
+      if (base < 0 || base >= static_cast<int>(chords.size()))
+        continue;
       std::vector<int> outwards = curve;
       if (end == 1)
         std::reverse(outwards.begin(), outwards.end());
@@ -81,13 +84,22 @@ std::vector<double> largestCurveGaps(const TracedNet& net, double reach)
   std::vector<double> gaps(net.landmarkVertex.size(), 0.0);
   for (std::size_t base = 0; base < chords.size(); ++base)
   {
-    const Vec3 normal = vertexNormal(net.mesh, net.landmarkVertex[base]).normalized();
-    if (chords[base].empty() || !normal.allFinite())
+    if (chords[base].empty() || net.landmarkVertex[base] < 0)
       continue;
+    const Vec3 areaNormal = vertexNormal(net.mesh, net.landmarkVertex[base]);
+    if (!(areaNormal.squaredNorm() > 0.0) || !areaNormal.allFinite())
+      continue; // no tangent plane to read the angles in
+    const Vec3 normal = areaNormal.normalized();
     const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
     std::vector<double> angles;
     for (const Vec3& chord : chords[base])
-      angles.push_back(std::atan2(chord.dot(w), chord.dot(u)));
+    {
+      const Vec3 tangential = chord - chord.dot(normal) * normal;
+      if (tangential.norm() > 1e-9 * chord.norm()) // a chord along the normal has no direction
+        angles.push_back(std::atan2(chord.dot(w), chord.dot(u)));
+    }
+    if (angles.empty())
+      continue;
     std::sort(angles.begin(), angles.end());
     double largest = 2.0 * kPi - (angles.back() - angles.front()); // across the cut at +-pi
     for (std::size_t k = 1; k < angles.size(); ++k)

@@ -26,15 +26,17 @@ struct CurveGap
 };
 
 /// \brief For every base vertex (landmark) of `net`, the largest angle, in
-///        degrees, between two consecutive curves leaving it. A curve's
-///        direction is that of the chord from the landmark to the curve's
-///        point `reach` × the bounding-box diagonal along it (half-way if
-///        the curve is shorter), projected into the landmark's tangent
-///        plane (normal: the area-weighted normal of its triangles). 360 /
-///        valence for curves spread evenly; on the SHREC'07 models with `L0`
-///        from 381, above 250° is where the remesh keeps folds after repair
-///        (384's landmark 8: 347°). Linear in the curves' lengths plus the
-///        landmarks' triangles.
+///        degrees, between two consecutive curves leaving it (0 where it
+///        has no tangent plane or no curve). A curve's direction is that of
+///        the chord from the landmark to the curve's first vertex at least
+///        `reach` × the bounding-box diagonal along it (at least half-way
+///        if the curve is shorter than twice that), projected into the
+///        landmark's tangent plane (normal: the area-weighted normal of its
+///        triangles). 360 / valence for curves spread evenly. On the
+///        SHREC'07 models with `L0` from 381, the remesh keeps folds after
+///        repair at landmarks above 250° (384's landmark 8: 347°), though
+///        not at every one (385's landmark 13: 274°, none by default).
+///        Linear in the mesh's vertices and the curves' lengths.
 std::vector<double> largestCurveGaps(const TracedNet& net, double reach = kCurveSpreadReach);
 
 /// \brief The largest of `largestCurveGaps()` and its base vertex.

@@ -255,7 +255,8 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
         # count says where it is not bijective.
         "flipped_triangles": int(value("FlippedTriangles")),
         "smallest_area_ratio": _significant(value("SmallestAreaRatio"), 4),
-        # Above about 250 degrees the remesh keeps folds at that landmark.
+        # Above about 250 degrees the curves leave that landmark bunched and
+        # the remesh often keeps folds there.
         "widest_curve_gap_degrees": round(value("WidestCurveGap"), 1),
         "widest_curve_gap_landmark": int(value("WidestCurveGapFeature")),
         "net_valid": bool(value("NetValid")),

@@ -31,8 +31,12 @@
 /// `SmallestAreaRatio` (over all triangles, the share of its base
 /// triangle's area a triangle's image takes divided by its share of its
 /// patch's surface area: 1 for an area-preserving map, tiny where a part
-/// without landmarks is crushed) and `NetValid` (1 when the independent
-/// layout check passes on the result).
+/// without landmarks is crushed), `WidestCurveGap` and
+/// `WidestCurveGapFeature` (the largest angle, in degrees, between two
+/// consecutive curves leaving a landmark, and that landmark: above about
+/// 250° the curves leave bunched and a remesh often folds there; see
+/// CurveSpread.h) and `NetValid` (1 when the independent layout check
+/// passes on the result).
 /// Output 1: the net as polylines, one per `L0` edge, with cell arrays
 /// `BaseEdgeId`, `FeatureIdA` and `FeatureIdB`, and the same field arrays.
 class CMPFILTERS_EXPORT vtkCMPNetStraightener : public vtkPolyDataAlgorithm
