@@ -46,24 +46,11 @@ Vec3 pointAlong(const EditableMesh& mesh, const std::vector<int>& curve, double 
   return mesh.point(curve.back());
 }
 
-double boundingBoxDiagonal(const EditableMesh& mesh)
-{
-  if (mesh.vertexCount() == 0)
-    return 0.0;
-  Vec3 low = mesh.point(0), high = low;
-  for (int v = 1; v < mesh.vertexCount(); ++v)
-  {
-    low = low.cwiseMin(mesh.point(v));
-    high = high.cwiseMax(mesh.point(v));
-  }
-  return (high - low).norm();
-}
-
 } // namespace
 
 std::vector<double> largestCurveGaps(const TracedNet& net, double reach)
 {
-  const double distance = reach * boundingBoxDiagonal(net.mesh);
+  const double distance = reach * boundingBoxDiagonal(net.mesh.points());
   std::vector<std::vector<Vec3>> chords(net.landmarkVertex.size());
   for (std::size_t e = 0; e < net.curves.size() && e < net.baseEdges.size(); ++e)
   {

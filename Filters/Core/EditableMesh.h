@@ -42,6 +42,8 @@ public:
   int halfedgeCount() const { return static_cast<int>(opposite_.size()); }
   /// \brief Position of vertex `v`.
   const Vec3& point(int v) const { return points_[v]; }
+  /// \brief Positions of all vertices, removed ones included.
+  const std::vector<Vec3>& points() const { return points_; }
   /// \brief Vertex indices of triangle `t`.
   const Triangle& triangle(int t) const { return triangles_[t]; }
 

@@ -420,13 +420,7 @@ Status ParameterizedSurface::build(
   for (int p = 0; p < patchCount; ++p)
     index->grids[p].build(index->cornersOf[p]);
 
-  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-  {
-    low = low.cwiseMin(mesh.point(v));
-    high = high.cwiseMax(mesh.point(v));
-  }
-  diagonal_ = mesh.vertexCount() > 0 ? (high - low).norm() : 0.0;
+  diagonal_ = cmp::boundingBoxDiagonal(mesh.points());
   index_ = std::move(index);
   net_ = &net;
   domain_ = &domain;

@@ -8,20 +8,25 @@
 namespace cmp
 {
 
-double boundingBoxDiagonal(const TriangleMesh& mesh)
+double boundingBoxDiagonal(const std::vector<Vec3>& points)
 {
-  if (mesh.points.empty())
+  if (points.empty())
   {
     return 0.0;
   }
-  Vec3 lo = mesh.points.front();
+  Vec3 lo = points.front();
   Vec3 hi = lo;
-  for (const Vec3& p : mesh.points)
+  for (const Vec3& p : points)
   {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
   return (hi - lo).norm();
+}
+
+double boundingBoxDiagonal(const TriangleMesh& mesh)
+{
+  return boundingBoxDiagonal(mesh.points);
 }
 
 double triangleArea(const TriangleMesh& mesh, int t)

@@ -44,6 +44,10 @@ struct TriangleMesh
   int triangleCount() const { return static_cast<int>(triangles.size()); }
 };
 
+/// \brief Length of the diagonal of the axis-aligned bounding box of
+///        `points` (0 if empty).
+double boundingBoxDiagonal(const std::vector<Vec3>& points);
+
 /// \brief Length of the diagonal of the axis-aligned bounding box (0 if empty).
 double boundingBoxDiagonal(const TriangleMesh& mesh);
 
