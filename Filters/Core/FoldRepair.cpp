@@ -584,6 +584,54 @@ std::vector<char> foldedTriangles(
   return folded;
 }
 
+std::vector<int> foldsNearLandmarks(
+  const SemiRegularMesh& remesh, int landmarkCount, const std::vector<char>& folded)
+{
+  const int vertexCount = remesh.vertexCount();
+  if (folded.size() != remesh.triangles.size() || landmarkCount < 0 || landmarkCount > vertexCount)
+    return {};
+  std::vector<std::vector<int>> neighbours(vertexCount);
+  for (const Triangle& tri : remesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (tri[k] >= 0 && tri[k] < vertexCount && tri[(k + 1) % 3] >= 0 && tri[(k + 1) % 3] < vertexCount)
+      {
+        neighbours[tri[k]].push_back(tri[(k + 1) % 3]);
+        neighbours[tri[(k + 1) % 3]].push_back(tri[k]);
+      }
+  // Breadth first from all landmarks at once: every vertex keeps the
+  // landmark that reaches it first.
+  std::vector<int> distance(vertexCount, -1), nearest(vertexCount, -1), queue;
+  for (int f = 0; f < landmarkCount; ++f)
+  {
+    distance[f] = 0;
+    nearest[f] = f;
+    queue.push_back(f);
+  }
+  for (std::size_t i = 0; i < queue.size(); ++i)
+    for (int w : neighbours[queue[i]])
+      if (distance[w] < 0)
+      {
+        distance[w] = distance[queue[i]] + 1;
+        nearest[w] = nearest[queue[i]];
+        queue.push_back(w);
+      }
+  std::vector<int> counts(landmarkCount, 0);
+  for (std::size_t t = 0; t < folded.size(); ++t)
+  {
+    if (!folded[t])
+      continue;
+    int closest = -1;
+    for (int v : remesh.triangles[t])
+      if (v >= 0 && v < vertexCount && nearest[v] >= 0 &&
+        (closest < 0 || distance[v] < distance[closest] ||
+          (distance[v] == distance[closest] && nearest[v] < nearest[closest])))
+        closest = v;
+    if (closest >= 0)
+      ++counts[nearest[closest]];
+  }
+  return counts;
+}
+
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
   const FoldRepairOptions& options, FoldRepairReport* report)
 {

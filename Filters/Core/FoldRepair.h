@@ -58,6 +58,19 @@ int countFoldedTriangles(
 std::vector<char> foldedTriangles(
   const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
 
+/// \brief How many of the `folded` remesh triangles (1 per folded
+///        triangle, in triangle order, as `foldedTriangles()` gives) lie
+///        nearest to each landmark: entry f counts those whose nearest
+///        landmark, in remesh edges from their corners, is feature f (remesh
+///        vertex f; `landmarkCount` is the base domain's vertex count). Ties
+///        are broken by the connectivity alone, the same way on every model.
+///        Says which landmark to move, or to add one beside, where folds
+///        stay after repair. Linear in the remesh; empty if `folded` does
+///        not have one entry per triangle or `landmarkCount` is not between
+///        0 and the remesh's vertex count.
+std::vector<int> foldsNearLandmarks(
+  const SemiRegularMesh& remesh, int landmarkCount, const std::vector<char>& folded);
+
 /// \brief Moves vertices of folded remesh triangles along `surface` until
 ///        their triangles agree with it, or no move helps.
 ///

@@ -267,6 +267,33 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
     model.parameterized = surface
 
 
+def _folds_near_landmark(remesh):
+    """The remesher's FoldsNearFeature as {"landmark": folds}, landmarks with
+    folds only, most folds first: where folds stay after repair."""
+    counts = remesh.GetFieldData().GetArray("FoldsNearFeature")
+    pairs = [(feature, int(counts.GetValue(feature))) for feature in range(counts.GetNumberOfTuples())]
+    pairs = sorted((pair for pair in pairs if pair[1] > 0), key=lambda pair: (-pair[1], pair[0]))
+    return {str(feature): folds for feature, folds in pairs}
+
+
+def fold_summary(model):
+    """One line on the folds a model's remesh keeps after repair and the
+    landmarks they lie nearest to, or None if it keeps none."""
+    remesh = model.report.get("remesh", {})
+    near = remesh.get("folds_near_landmark")
+    if not remesh.get("flipped_triangles") or not near:
+        return None
+    where = ["%s (%d)" % item for item in near.items()]
+    where = where[0] if len(where) == 1 else ", ".join(where[:-1]) + " and " + where[-1]
+    line = "%s: %d remesh triangles are folded, nearest landmark%s %s" % (
+        model.name, remesh["flipped_triangles"], "" if len(near) == 1 else "s", where)
+    gap = model.report.get("straighten", {})
+    if str(gap.get("widest_curve_gap_landmark")) in near:
+        line += "; the curves leave landmark %d within %.0f degrees of each other" % (
+            gap["widest_curve_gap_landmark"], 360 - gap["widest_curve_gap_degrees"])
+    return line + " (moving it, or adding a landmark beside it, can help: see known issues)"
+
+
 def _significant(value, digits=6):
     return float("%.*g" % (digits, value))
 
@@ -320,6 +347,7 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
             "hausdorff_landmark_distance_per_diagonal": _significant(value("HausdorffFeatureDistanceRelative")),
             # Reported, not a failure, as for the straightener.
             "flipped_triangles": int(value("FlippedTriangles")),
+            "folds_near_landmark": _folds_near_landmark(remesh),
             "folded_before_repair": int(value("FoldedBeforeRepair")),
             "repaired_vertices": int(value("RepairedVertices")),
             "min_angle_degrees": round(value("MinimumAngle"), 4),
@@ -1217,6 +1245,10 @@ def print_summary(models, report):
         hausdorff = "-" if hausdorff is None else "%.2f" % (100 * hausdorff)
         print("%-*s  %8s  %8.3f  %11s  %12s  %16s  %s"
               % (width, model.name, r.get("vertices", "-"), seconds, net, straight, hausdorff, result))
+    for model in models:
+        line = fold_summary(model)
+        if line:
+            print(line)
 
 
 def _print_from_source(stage, title, how=""):

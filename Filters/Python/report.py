@@ -114,7 +114,7 @@ def _summary(report):
 def _models(report):
     header = ["model", "vertices", "triangles", "net / √area, traced", "straightened", "flipped parameter triangles",
               "Hausdorff / diagonal", "farthest point: nearest landmark (distance / diagonal)",
-              "flipped remesh triangles", "seconds", "result"]
+              "flipped remesh triangles (nearest landmark: how many)", "seconds", "result"]
     rows = []
     for name, model in report["models"].items():
         remesh = model.get("remesh", {})
@@ -126,11 +126,19 @@ def _models(report):
             model.get("straighten", {}).get("flipped_triangles", "-"),
             "-" if hausdorff is None else "%.2f %%" % (100 * hausdorff),
             _farthest(remesh),
-            remesh.get("flipped_triangles", "-"),
+            _folds(remesh),
             "%.2f" % sum(model["seconds"].values()),
             "ok" if model.get("status") == "ok" else "failed: %s" % model.get("error", ""),
         ])
     return [Heading("Models"), Table(header, rows)]
+
+
+def _folds(remesh):
+    """The remesh's folded triangles and the landmarks they lie nearest to."""
+    near = remesh.get("folds_near_landmark")
+    if not near:
+        return remesh.get("flipped_triangles", "-")
+    return "%d (near %s)" % (remesh["flipped_triangles"], ", ".join("%s: %d" % item for item in near.items()))
 
 
 def _farthest(remesh):

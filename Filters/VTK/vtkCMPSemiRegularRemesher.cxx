@@ -322,6 +322,16 @@ public:
     progress(0.7);
 
     vtkFieldData* field = remesh->GetFieldData();
+    // Where folds stay after repair, the landmark to move or to add one
+    // beside: one count per feature, in FeatureId order.
+    const std::vector<int> foldsNear = cmp::foldsNearLandmarks(
+      shared.mesh, static_cast<int>(input_.domain().featureIds.size()), quality.folded);
+    auto foldsNearFeature = vtkSmartPointer<vtkIntArray>::New();
+    foldsNearFeature->SetName("FoldsNearFeature");
+    foldsNearFeature->SetNumberOfValues(static_cast<vtkIdType>(foldsNear.size()));
+    for (std::size_t f = 0; f < foldsNear.size(); ++f)
+      foldsNearFeature->SetValue(static_cast<vtkIdType>(f), foldsNear[f]);
+    field->AddArray(foldsNearFeature);
     // The remesh is still that model: keep its name (never on the shared
     // connectivity output, which is no model's).
     cmp::bridge::copySourceFile(input_.input(), remesh);

@@ -35,7 +35,9 @@ class vtkPolyData;
 /// `L0` triangle of each triangle), `Level` and `Folded` (1 for a triangle
 /// facing against the surface, the ones `FlippedTriangles` counts). Field arrays: `RemeshLevel`,
 /// `VertexCount`, `TriangleCount`, `FlippedTriangles` (after repair),
-/// `FoldedBeforeRepair`, `RepairedVertices`, `MinimumAngle`,
+/// `FoldedBeforeRepair`, `FoldsNearFeature` (one count per landmark, in
+/// `FeatureId` order: the folded triangles after repair nearest to it in
+/// remesh edges), `RepairedVertices`, `MinimumAngle`,
 /// `MeanShapeQuality`, `SampleRelaxationRounds`, timings (`RebuildSeconds`,
 /// `SampleRelaxationSeconds`, `PlacementSeconds`, `TotalSeconds`) and, with ComputeDistance, the distances to the input
 /// (`HausdorffDistance`, `HausdorffDistanceRelative`, `MeanDistance`,

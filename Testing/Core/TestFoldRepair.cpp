@@ -283,3 +283,68 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
               << " of the diagonal; Hausdorff distance " << hausdorffBefore << " -> " << hausdorffAfter << "\n";
   }
 }
+
+TEST(FoldRepair, CountsFoldsByTheirNearestLandmarkAlongRemeshEdges)
+{
+  const BaseDomain domain = test::orderedOctahedronDomain();
+  SemiRegularMesh remesh;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 3, remesh).ok());
+  const int landmarks = domain.mesh.vertexCount();
+  std::vector<char> folded(remesh.triangles.size(), 0);
+  // The fan around landmark 2 (valence 4), and one triangle two rings from
+  // landmark 5 and farther from every other.
+  int fan = 0;
+  for (std::size_t t = 0; t < remesh.triangles.size(); ++t)
+  {
+    const Triangle& tri = remesh.triangles[t];
+    if (std::find(tri.begin(), tri.end(), 2) != tri.end())
+      folded[t] = 1, ++fan;
+  }
+  ASSERT_EQ(fan, 4);
+  const std::vector<int> ringOne = neighboursOf(remesh, 5);
+  int beyond = -1;
+  for (std::size_t t = 0; t < remesh.triangles.size() && beyond < 0; ++t)
+  {
+    const Triangle& tri = remesh.triangles[t];
+    const auto inRingOne = [&](int v) { return std::find(ringOne.begin(), ringOne.end(), v) != ringOne.end(); };
+    if (std::find(tri.begin(), tri.end(), 5) == tri.end() && std::count_if(tri.begin(), tri.end(), inRingOne) == 1)
+      beyond = static_cast<int>(t);
+  }
+  ASSERT_GE(beyond, 0);
+  folded[beyond] = 1;
+
+  const std::vector<int> counts = foldsNearLandmarks(remesh, landmarks, folded);
+  ASSERT_EQ(counts.size(), static_cast<std::size_t>(landmarks));
+  for (int f = 0; f < landmarks; ++f)
+    EXPECT_EQ(counts[f], f == 2 ? 4 : f == 5 ? 1 : 0) << "landmark " << f;
+
+  EXPECT_TRUE(foldsNearLandmarks(remesh, landmarks, std::vector<char>(3, 1)).empty());
+  EXPECT_TRUE(foldsNearLandmarks(remesh, -1, folded).empty());
+  EXPECT_EQ(foldsNearLandmarks(remesh, landmarks, std::vector<char>(remesh.triangles.size(), 0)),
+    std::vector<int>(landmarks, 0));
+}
+
+TEST(FoldRepair, NamesTheLandmarksWhereTheFoldsStayOnModel384)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const BaseDomain domain = test::realBaseDomain("381");
+  SemiRegularMesh remesh;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
+  test::ParameterizedModel model;
+  ASSERT_TRUE(test::parameterizeOnDomain(test::landmarkedRealModel("384"), domain, model).ok());
+  std::vector<SurfaceSample> samples = place(remesh, domain, model).samples;
+  FoldRepairReport report;
+  ASSERT_TRUE(repairFolds(remesh, model.net.mesh, samples, {}, &report).ok());
+  const std::vector<int> counts =
+    foldsNearLandmarks(remesh, domain.mesh.vertexCount(), foldedTriangles(remesh, model.net.mesh, samples));
+  ASSERT_EQ(counts.size(), static_cast<std::size_t>(domain.mesh.vertexCount()));
+  int total = 0;
+  for (int count : counts) // indexed by feature, like the remesh's first vertices
+    total += count;
+  // Measured: 18 folds, 10 nearest landmark 8 (the outside of the left hind
+  // leg's top, where the curves leave bunched) and 8 nearest landmark 20
+  // beside it.
+  EXPECT_EQ(total, report.foldedAfter);
+  EXPECT_GT(report.foldedAfter, 0);
+  EXPECT_EQ(counts[8] + counts[20], total);
+}

@@ -223,7 +223,7 @@ def check_straightened(out, name, model, landmarks=21, flips_allowed=False):
 
 REMESH_KEYS = ("level", "vertices", "triangles", "hausdorff_distance", "hausdorff_per_diagonal", "mean_distance",
                "hausdorff_point", "hausdorff_point_on", "hausdorff_nearest_landmark",
-               "hausdorff_landmark_distance_per_diagonal", "flipped_triangles", "folded_before_repair",
+               "hausdorff_landmark_distance_per_diagonal", "flipped_triangles", "folds_near_landmark", "folded_before_repair",
                "repaired_vertices", "min_angle_degrees", "mean_shape_quality", "seconds")
 
 
@@ -297,6 +297,13 @@ def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0
             check_equal(figures[key], int(field.GetArray(array).GetValue(0)),
                         name + ": %s against the remesh's field data" % key)
         check(figures["flipped_triangles"] <= figures["folded_before_repair"], name + ": repair added folds %r" % figures)
+        # Every fold is counted at exactly one landmark, most folds first.
+        near = figures["folds_near_landmark"]
+        check_equal(sum(near.values()), figures["flipped_triangles"], name + ": folds_near_landmark %r" % near)
+        check(all(0 <= int(f) < landmarks and folds > 0 for f, folds in near.items()), name + ": %r" % near)
+        check_equal(list(near.values()), sorted(near.values(), reverse=True), name + ": folds_near_landmark order")
+        check_equal(sum(field.GetArray("FoldsNearFeature").GetValue(f) for f in range(landmarks)),
+                    figures["flipped_triangles"], name + ": FoldsNearFeature")
         for key, array in (("hausdorff_distance", "HausdorffDistance"), ("hausdorff_per_diagonal",
                            "HausdorffDistanceRelative"), ("mean_distance", "MeanDistance")):
             written = field.GetArray(array).GetValue(0)
@@ -905,14 +912,23 @@ def case_fold_repair(tmp):
     (Spot with L0 from 381: thin wedge patches make needles that tip over);
     --no-fold-repair leaves every vertex where the parameterization puts it."""
     pairs = [(shrec("381", "off"), shrec("381", "vts")), spot_paths()]
-    figures = {}
+    figures, printed = {}, {}
     for flag in ([], ["--no-fold-repair"]):
         out = os.path.join(tmp, "out" + "".join(flag))
         status, stdout, stderr, report = run_cli(
             model_arguments(pairs) + ["--base-domain-from", "0", "--level", "5", "--no-render"] + flag, out)
         check_equal(status, 0, "exit status %s (stderr: %s)" % (flag, stderr))
         figures[bool(flag)] = report["models"]["spot"]["remesh"]
+        printed[bool(flag)] = stdout
     repaired, exact = figures[False], figures[True]
+    # What repair leaves lies at the insides of the hind legs' tops,
+    # landmarks 19 and 20 (measured: 10 and 5), and the summary says so.
+    near = repaired["folds_near_landmark"]
+    check_equal(sorted(near), ["19", "20"], "landmarks near Spot's folds after repair")
+    check_contains(printed[False], "spot: %d remesh triangles are folded, nearest landmarks 19 (%d) and 20 (%d)"
+                   % (repaired["flipped_triangles"], near["19"], near["20"]), "fold summary")
+    check("381: " not in [line[:5] for line in printed[False].splitlines()], "a fold line for 381, which has none")
+    check(len(exact["folds_near_landmark"]) > 2, "Spot's folds before repair lie at only %r" % exact["folds_near_landmark"])
     check_equal(exact["repaired_vertices"], 0, "repaired vertices with --no-fold-repair")
     check_equal(exact["folded_before_repair"], exact["flipped_triangles"], "folds with --no-fold-repair")
     check_equal(repaired["folded_before_repair"], exact["flipped_triangles"], "folds before repair")

@@ -63,6 +63,10 @@ def check_block(remesh, straightened, what):
         check(remesh.GetCellData().GetArray(name) is not None, what + ": no cell array " + name)
     check_equal(int(vtk_to_numpy(remesh.GetCellData().GetArray("Folded")).sum()), flipped,
                 what + ": Folded against FlippedTriangles")
+    near = remesh.GetFieldData().GetArray("FoldsNearFeature")
+    check(near is not None, what + ": no field array FoldsNearFeature")
+    check_equal(near.GetNumberOfTuples(), LANDMARKS, what + ": FoldsNearFeature has one count per landmark")
+    check_equal(int(vtk_to_numpy(near).sum()), flipped, what + ": FoldsNearFeature against FlippedTriangles")
     print("%s: %d vertices, %d flipped, minimum angle %.2f deg, Hausdorff %.4f of the diagonal, %.3f s"
           % (what, vertices, flipped, field(remesh, "MinimumAngle"), relative, field(remesh, "TotalSeconds")))
     return points
