@@ -148,9 +148,9 @@ TEST(SemiRegularRemesher, LowerStretchReachesFurtherIntoLandmarkFreeProtrusions)
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
   // 381's ears, 385's long thin tail and Spot's horns carry no landmark;
-  // measured at level 5: 0.051 -> 0.014, 0.091 -> 0.019 (the tail's patch
-  // needs progressive steps: plain ones stall at 0.091) and 0.026 -> 0.005
-  // of the diagonal.
+  // measured at level 5: 0.051 -> 0.014, 0.091 -> 0.046 (the tail's patch
+  // needs about 210 progressive steps: plain ones stall at 0.091) and
+  // 0.026 -> 0.005 of the diagonal.
   for (const std::string name : { "381", "385", "spot" })
   {
     const test::LandmarkedModel model = test::landmarkedRealModel(name);
@@ -176,13 +176,48 @@ TEST(SemiRegularRemesher, LowerStretchReachesFurtherIntoLandmarkFreeProtrusions)
       if (mode == 1)
         flipped = trianglesAgainstSurface(remesh, parameterized.net, samples, positions);
     }
-    EXPECT_LT(hausdorff[1], 0.4 * hausdorff[0]) << name;
-    EXPECT_LT(hausdorff[1], name == "385" ? 0.03 : 0.02) << name;
+    EXPECT_LT(hausdorff[1], (name == "385" ? 0.6 : 0.4) * hausdorff[0]) << name;
+    EXPECT_LT(hausdorff[1], name == "385" ? 0.055 : 0.02) << name;
     // The price (known-issues.md): more folds; bounded as for the default.
     EXPECT_LT(flipped, (name == "spot" ? 0.012 : 0.005) * remesh.triangles.size()) << name;
     std::cout << name << ": level 5 Hausdorff distance " << hausdorff[0] << " -> " << hausdorff[1]
               << " of the diagonal with lowered stretch, " << flipped << " triangles against the surface normal\n";
   }
+}
+
+TEST(SemiRegularRemesher, LowerStretchSettlesTheSameWayWhateverTheRounding)
+{
+  // 385's tail patch is relaxed until it settles, not until a step budget
+  // runs out mid-way. With 150 steps, scaling the model by 1 + 1e-15 or
+  // 1 + 1e-13 (another rounding, as on another machine) moved its remesh
+  // from 0.066 to 0.017 or 0.020 of the diagonal from the tail's tip;
+  // settled: 0.046, 0.043, 0.043.
+  CMP_REQUIRE_SHARED_DATA();
+  const BaseDomain domain = test::realBaseDomain("381");
+  SemiRegularMesh remesh;
+  ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
+  std::vector<double> hausdorff;
+  for (double scale : { 0.0, 1e-15, 1e-13 })
+  {
+    test::LandmarkedModel model = test::landmarkedRealModel("385");
+    for (Vec3& p : model.data.mesh.points)
+      p *= 1.0 + scale;
+    test::ParameterizedModel parameterized;
+    ASSERT_TRUE(test::parameterizeOnDomain(model, domain, parameterized).ok());
+    PatchParameterizationOptions options;
+    options.lowerStretch = true;
+    PatchParameterization lowered;
+    ASSERT_TRUE(parameterizePatches(parameterized.net, domain, lowered, options).ok());
+    std::vector<SurfaceSample> samples;
+    ASSERT_TRUE(placeOnSurface(remesh, parameterized.net, domain, lowered, samples).ok());
+    const std::vector<Vec3> positions = samplePositions(parameterized.net, samples);
+    hausdorff.push_back(surfaceDistance(remeshSurface(remesh, positions), model.data.mesh).hausdorff() /
+      boundingBoxDiagonal(model.data.mesh));
+    std::cout << "385 scaled by 1 + " << scale << ", LowerStretch, level 5: Hausdorff distance " << hausdorff.back()
+              << " of the diagonal\n";
+  }
+  const auto [least, most] = std::minmax_element(hausdorff.begin(), hausdorff.end());
+  EXPECT_LT(*most - *least, 0.01);
 }
 
 TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangle)
@@ -225,9 +260,9 @@ TEST(SemiRegularRemesher, AdaptiveRemeshWithLowerStretchIsWithinOnePercentOfEver
   // The way to 1% of the diagonal on models whose tails and ears carry no
   // landmark: LowerStretch gives those parts room in the base domain, and
   // adaptive refinement spends the triangles there. Measured on 381, 385
-  // and Spot (tolerance 0.005, levels up to 8): 9316 triangles, a quarter
-  // of uniform level 5, and 0.0056, 0.0075, 0.0055 of the diagonal, where
-  // uniform level 5 gives 0.014, 0.019 and 0.005 with LowerStretch (385:
+  // and Spot (tolerance 0.005, levels up to 8): 9298 triangles, a quarter
+  // of uniform level 5, and 0.0056, 0.0065, 0.0055 of the diagonal, where
+  // uniform level 5 gives 0.014, 0.046 and 0.005 with LowerStretch (385:
   // 0.091 without).
   CMP_REQUIRE_SHARED_DATA();
   const BaseDomain domain = test::realBaseDomain("381");
