@@ -653,7 +653,14 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       origin.push_back(mesh.position(v)), placed.push_back(mesh.point(v));
     const double typicalEdge = kTypicalEdgeShare * medianEdgeLength(mesh);
     const std::vector<double> reach = singleMoveReach(mesh, options.reach, typicalEdge);
-    for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
+    // Regions first: single moves made first settle into a state where a
+    // fan of needles is locked (each vertex's best move folds a neighbour)
+    // and the regions' descent then often stalls there; after the regions,
+    // single moves only clean up isolated folds.
+    const double regionReach = options.reach * typicalEdge;
+    for (int widening = 1; widening <= options.regionWidening && mesh.foldedCount() > 0; ++widening)
+      untangle(surface, mesh, origin, widening * regionReach);
+    for (int sweep = 0; sweep < options.maximumSweeps && mesh.foldedCount() > 0; ++sweep)
     {
       bool any = false;
       for (int v : mesh.verticesOfFoldedTriangles())
@@ -661,9 +668,6 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       if (!any)
         break;
     }
-    const double regionReach = options.reach * typicalEdge;
-    for (int widening = 1; widening <= options.regionWidening && mesh.foldedCount() > 0; ++widening)
-      untangle(surface, mesh, origin, widening * regionReach);
     writeBack(surface, mesh, placed, origin, samples, result);
     result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   }

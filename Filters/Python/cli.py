@@ -285,8 +285,9 @@ def fold_summary(model):
         return None
     where = ["%s (%d)" % item for item in near.items()]
     where = where[0] if len(where) == 1 else ", ".join(where[:-1]) + " and " + where[-1]
-    line = "%s: %d remesh triangles are folded, nearest landmark%s %s" % (
-        model.name, remesh["flipped_triangles"], "" if len(near) == 1 else "s", where)
+    folds = remesh["flipped_triangles"]
+    line = "%s: %d remesh triangle%s folded, nearest landmark%s %s" % (
+        model.name, folds, " is" if folds == 1 else "s are", "" if len(near) == 1 else "s", where)
     gap = model.report.get("straighten", {})
     if str(gap.get("widest_curve_gap_landmark")) in near:
         line += "; the curves leave landmark %d within %.0f degrees of each other" % (

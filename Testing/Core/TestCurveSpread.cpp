@@ -22,7 +22,7 @@ TEST(CurveSpread, FindsTheLandmarkWhereTheStraightenedCurvesLeaveBunched)
   CMP_REQUIRE_SHARED_DATA();
   const BaseDomain domain = test::realBaseDomain("381");
   // Measured: 384's landmark 8 (the outside of the left hind leg's top),
-  // where its remesh keeps 18 folds after repair, 347 degrees; 387, whose
+  // where its remesh keeps 3 folds after repair, 347 degrees; 387, whose
   // remesh keeps none, 182.
   for (const std::string name : { "384", "387" })
   {

@@ -202,9 +202,10 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
   const BaseDomain domain = test::realBaseDomain("381");
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
-  // Measured at level 5 with L0 from 381: 417 -> 15 on Spot (its two
-  // thin wedge patches keep the rest), 59 -> 1 on 391; without widening
-  // the regions' reach, 28 and 4.
+  // Measured at level 5 with L0 from 381: 417 -> 6 on Spot (its two thin
+  // wedge patches keep the rest), 59 -> 0 on 391; without widening the
+  // regions' reach, 8 and 4; with single moves before the regions' moves
+  // (the order until November 2026), 15 and 1.
   for (const std::string name : { "spot", "391" })
   {
     const test::LandmarkedModel model = test::landmarkedRealModel(name);
@@ -217,7 +218,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     EXPECT_EQ(report.foldedBefore, countFoldedTriangles(remesh, parameterized.net.mesh, placed.samples)) << name;
     EXPECT_EQ(report.foldedAfter, countFoldedTriangles(remesh, parameterized.net.mesh, samples)) << name;
     EXPECT_GT(report.foldedBefore, 50) << name;
-    EXPECT_LT(report.foldedAfter, 0.05 * report.foldedBefore) << name;
+    EXPECT_LT(report.foldedAfter, 0.03 * report.foldedBefore) << name;
 
     const std::vector<Vec3> repaired = samplePositions(parameterized.net, samples);
     const double diagonal = boundingBoxDiagonal(model.data.mesh);
@@ -341,9 +342,9 @@ TEST(FoldRepair, NamesTheLandmarksWhereTheFoldsStayOnModel384)
   int total = 0;
   for (int count : counts) // indexed by feature, like the remesh's first vertices
     total += count;
-  // Measured: 18 folds, 10 nearest landmark 8 (the outside of the left hind
-  // leg's top, where the curves leave bunched) and 8 nearest landmark 20
-  // beside it.
+  // Measured: 3 folds, all nearest landmark 8 (the outside of the left
+  // hind leg's top, where the curves leave bunched; landmark 20 is beside
+  // it).
   EXPECT_EQ(total, report.foldedAfter);
   EXPECT_GT(report.foldedAfter, 0);
   EXPECT_EQ(counts[8] + counts[20], total);

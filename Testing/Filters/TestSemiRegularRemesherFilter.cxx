@@ -566,23 +566,23 @@ TEST(SemiRegularRemesherFilter, RepairFoldsUnfoldsMostOfSpotsFoldsAndCanBeTurned
   auto* exact = vtkPolyData::SafeDownCast(remesher->GetOutputDataObject(0));
   ASSERT_NE(exact, nullptr);
 
-  // Measured: 417 folded triangles, 15 after repair (Spot's two thin
-  // wedge patches keep the rest; 28 without widening the regions' reach).
+  // Measured: 417 folded triangles, 6 after repair (Spot's two thin wedge
+  // patches keep the rest; 15 when single moves came before the regions').
   const double before = fieldValue(exact, "FlippedTriangles");
   EXPECT_EQ(fieldValue(exact, "FoldedBeforeRepair"), before);
   EXPECT_EQ(fieldValue(exact, "RepairedVertices"), 0.0);
   EXPECT_EQ(fieldValue(repaired, "FoldedBeforeRepair"), before);
   EXPECT_GT(before, 300.0);
-  EXPECT_LT(fieldValue(repaired, "FlippedTriangles"), 0.05 * before);
+  EXPECT_LT(fieldValue(repaired, "FlippedTriangles"), 0.03 * before);
   expectSameConnectivity(exact, repaired, "repaired");
   // What stays lies at the insides of the hind legs' tops, landmarks 19 and
-  // 20 (measured: 10 and 5), where the curves leave bunched.
+  // 20 (measured: 3 and 3), where the curves leave bunched.
   vtkDataArray* foldsNear = repaired->GetFieldData()->GetArray("FoldsNearFeature");
   ASSERT_NE(foldsNear, nullptr);
   EXPECT_EQ(foldsNear->GetComponent(19, 0) + foldsNear->GetComponent(20, 0), fieldValue(repaired, "FlippedTriangles"));
 
   // Only the vertices it reports moved, by at most two median remesh edges
-  // (measured: 0.54% of the diagonal).
+  // (measured: 0.45% of the diagonal).
   int moved = 0;
   double farthest = 0.0;
   for (vtkIdType v = 0; v < exact->GetNumberOfPoints(); ++v)
