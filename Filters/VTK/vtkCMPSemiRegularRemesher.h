@@ -119,8 +119,8 @@ public:
   /// \brief Unfold remesh triangles that face against their surface
   ///        (default on). A thin triangle on a curved part can tip over
   ///        even though the parameterization is bijective; the vertices of
-  ///        such triangles are slid along the surface (alone, then with
-  ///        their neighbours), never more than two median edges (half of
+  ///        such triangles are slid along the surface (with their
+  ///        neighbours, then alone), never more than two median edges (half of
   ///        one where that suffices), until their triangles agree with the
   ///        surface or no short move helps.
   ///        Landmarks never move. A moved
