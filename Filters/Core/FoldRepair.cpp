@@ -26,9 +26,10 @@ constexpr double kTypicalEdgeShare = 0.25;
 /// Shape quality below which a triangle counts as bad while repairing, so
 /// that unfolding never pays with a collapsed triangle.
 constexpr double kLeastQuality = 1e-3;
-/// Joint untangling of what single moves leave: rings of vertices around
-/// each remaining fold, gradient steps at most, halvings of a step at most,
-/// and the shape quality above which a triangle no longer pulls.
+/// Joint untangling of the regions around the folds, before single moves:
+/// rings of vertices around each fold, gradient steps at most, halvings of
+/// a step at most, and the shape quality above which a triangle no longer
+/// pulls.
 constexpr int kUntangledRings = 5;
 constexpr int kUntangleIterations = 300;
 constexpr int kBacktrackingSteps = 12;
@@ -497,10 +498,10 @@ std::vector<std::vector<int>> connectedParts(const FoldedRemesh& mesh, const std
   return parts;
 }
 
-/// Where single moves are stuck (a band of needles sheared at the scale of
-/// several triangles, each move folding a neighbour), untangles the
-/// vertices within a few rings of the remaining folds, each connected part
-/// on its own so that one stiff spot does not hold back the step elsewhere.
+/// Untangles the vertices within a few rings of the folds (a band of needles
+/// sheared at the scale of several triangles, where each single move would
+/// fold a neighbour), each connected part on its own so that one stiff spot
+/// does not hold back the step elsewhere.
 void untangle(const EditableMesh& surface, FoldedRemesh& mesh, const std::vector<Vec3>& origin, double reach)
 {
   for (std::vector<int>& part : connectedParts(mesh, regionAroundFolds(mesh, kUntangledRings)))

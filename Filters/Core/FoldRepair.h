@@ -88,10 +88,12 @@ std::vector<int> foldsNearLandmarks(
 /// around the vertex (folded, or so flat that a fold would be traded for a
 /// collapse), then the best worst shape quality (signed by the triangle's
 /// agreement with the surface), never one with more folds; vertices with
-/// most folds around them go first. In the other order, single moves lock
-/// fans of needles that the joint moves then cannot undo (the 11 SHREC'07
-/// and Spot models at level 5: 39 folds left instead of 11). Landmark
-/// samples never move. Every moved sample still names the surface triangle
+/// most folds around them go first; a vertex the regions already took
+/// farther than its own reach from its parameterized place does not move
+/// alone. In the other order, single moves lock fans of needles that the
+/// joint moves then cannot undo (the 11 SHREC'07 and Spot models at level
+/// 5, one run: 39 folds left instead of 11; counts depend on rounding).
+/// Landmark samples never move. Every moved sample still names the surface triangle
 /// it lies in. Fails, changing nothing, on samples that do not fit `remesh`
 /// and `surface`.
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,

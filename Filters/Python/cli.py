@@ -269,16 +269,26 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
 
 def _folds_near_landmark(remesh):
     """The remesher's FoldsNearFeature as {"landmark": folds}, landmarks with
-    folds only, most folds first: where folds stay after repair."""
+    folds only, most folds first: where folds stay after repair ({} for a
+    remesh without the array)."""
     counts = remesh.GetFieldData().GetArray("FoldsNearFeature")
+    if counts is None:
+        return {}
     pairs = [(feature, int(counts.GetValue(feature))) for feature in range(counts.GetNumberOfTuples())]
     pairs = sorted((pair for pair in pairs if pair[1] > 0), key=lambda pair: (-pair[1], pair[0]))
     return {str(feature): folds for feature, folds in pairs}
 
 
-def fold_summary(model):
-    """One line on the folds a model's remesh keeps after repair and the
-    landmarks they lie nearest to, or None if it keeps none."""
+# Above this widest gap between the curves at a landmark, they leave it
+# bunched and the remesh often keeps folds there (Net Straightener's
+# WidestCurveGap; see the known issues).
+BUNCHED_CURVES_DEGREES = 250.0
+
+
+def fold_summary(model, repaired=True):
+    """One line on the folded triangles a model's remesh keeps and the
+    landmarks they lie nearest to, or None if it keeps none; `repaired`
+    says whether fold repair ran (without it, turning it on comes first)."""
     remesh = model.report.get("remesh", {})
     near = remesh.get("folds_near_landmark")
     if not remesh.get("flipped_triangles") or not near:
@@ -288,10 +298,13 @@ def fold_summary(model):
     folds = remesh["flipped_triangles"]
     line = "%s: %d remesh triangle%s folded, nearest landmark%s %s" % (
         model.name, folds, " is" if folds == 1 else "s are", "" if len(near) == 1 else "s", where)
+    if not repaired:
+        return line + " (fold repair is off)"
     gap = model.report.get("straighten", {})
-    if str(gap.get("widest_curve_gap_landmark")) in near:
-        line += "; the curves leave landmark %d within %.0f degrees of each other" % (
-            gap["widest_curve_gap_landmark"], 360 - gap["widest_curve_gap_degrees"])
+    if (str(gap.get("widest_curve_gap_landmark")) in near and
+            gap.get("widest_curve_gap_degrees", 0.0) > BUNCHED_CURVES_DEGREES):
+        line += "; the curves at landmark %d leave a %.0f-degree gap between two of them" % (
+            gap["widest_curve_gap_landmark"], gap["widest_curve_gap_degrees"])
     return line + " (moving it, or adding a landmark beside it, can help: see known issues)"
 
 
@@ -369,6 +382,7 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
         "triangles": connectivity.GetNumberOfCells(),
         "sample_relaxation_rounds": int(shared("SampleRelaxationRounds")),
         "sample_relaxation_seconds": round(shared("SampleRelaxationSeconds"), 4),
+        "fold_repair": bool(repair_folds),
         "seconds": round(seconds, 4),
     }
 
@@ -1247,7 +1261,7 @@ def print_summary(models, report):
         print("%-*s  %8s  %8.3f  %11s  %12s  %16s  %s"
               % (width, model.name, r.get("vertices", "-"), seconds, net, straight, hausdorff, result))
     for model in models:
-        line = fold_summary(model)
+        line = fold_summary(model, report.get("remesh", {}).get("fold_repair", True))
         if line:
             print(line)
 

@@ -36,8 +36,9 @@ class vtkPolyData;
 /// facing against the surface, the ones `FlippedTriangles` counts). Field arrays: `RemeshLevel`,
 /// `VertexCount`, `TriangleCount`, `FlippedTriangles` (after repair),
 /// `FoldedBeforeRepair`, `FoldsNearFeature` (one count per landmark, in
-/// `FeatureId` order: the folded triangles after repair nearest to it in
-/// remesh edges), `RepairedVertices`, `MinimumAngle`,
+/// `FeatureId` order: the folded triangles `FlippedTriangles` counts,
+/// after repair when `RepairFolds` is on, nearest to it in remesh edges),
+/// `RepairedVertices`, `MinimumAngle`,
 /// `MeanShapeQuality`, `SampleRelaxationRounds`, timings (`RebuildSeconds`,
 /// `SampleRelaxationSeconds`, `PlacementSeconds`, `TotalSeconds`) and, with ComputeDistance, the distances to the input
 /// (`HausdorffDistance`, `HausdorffDistanceRelative`, `MeanDistance`,
