@@ -303,8 +303,8 @@ def fold_summary(model, repaired=True):
     gap = model.report.get("straighten", {})
     if (str(gap.get("widest_curve_gap_landmark")) in near and
             gap.get("widest_curve_gap_degrees", 0.0) > BUNCHED_CURVES_DEGREES):
-        line += "; the curves at landmark %d leave a %.0f-degree gap between two of them" % (
-            gap["widest_curve_gap_landmark"], gap["widest_curve_gap_degrees"])
+        line += "; the curves at landmark %d leave a %d-degree gap between two of them" % (
+            gap["widest_curve_gap_landmark"], int(gap["widest_curve_gap_degrees"]))
     return line + " (moving it, or adding a landmark beside it, can help: see known issues)"
 
 
