@@ -146,6 +146,30 @@ struct VertexScore
 
 /// The remesh on the surface while it is repaired: where each vertex is,
 /// the surface normal under it, and which triangles and vertices touch it.
+/// The remesh vertices joined to each vertex by an edge, sorted, without
+/// repeats; edges with a corner outside the remesh are left out.
+std::vector<std::vector<int>> vertexNeighbours(const SemiRegularMesh& remesh)
+{
+  const int n = remesh.vertexCount();
+  std::vector<std::vector<int>> neighbours(n);
+  for (const Triangle& tri : remesh.triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = tri[k], b = tri[(k + 1) % 3];
+      if (a >= 0 && a < n && b >= 0 && b < n)
+      {
+        neighbours[a].push_back(b);
+        neighbours[b].push_back(a);
+      }
+    }
+  for (std::vector<int>& around : neighbours)
+  {
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+  }
+  return neighbours;
+}
+
 class FoldedRemesh
 {
 public:
@@ -157,7 +181,7 @@ public:
     , positions_(samples.size())
     , normals_(samples.size(), Vec3::Zero())
     , trianglesOf_(samples.size())
-    , neighbours_(samples.size())
+    , neighbours_(vertexNeighbours(remesh))
   {
     for (std::size_t v = 0; v < samples.size(); ++v)
     {
@@ -174,18 +198,8 @@ public:
       normals_[v] = surfaceTriangleNormal(surface, p.triangle);
     }
     for (int t = 0; t < triangleCount(); ++t)
-      for (int k = 0; k < 3; ++k)
-      {
-        const int a = remesh.triangles[t][k], b = remesh.triangles[t][(k + 1) % 3];
-        trianglesOf_[a].push_back(t);
-        neighbours_[a].push_back(b);
-        neighbours_[b].push_back(a);
-      }
-    for (std::vector<int>& around : neighbours_)
-    {
-      std::sort(around.begin(), around.end());
-      around.erase(std::unique(around.begin(), around.end()), around.end());
-    }
+      for (int v : remesh.triangles[t])
+        trianglesOf_[v].push_back(t);
   }
 
   int vertexCount() const { return static_cast<int>(positions_.size()); }
@@ -585,20 +599,12 @@ std::vector<char> foldedTriangles(
   return folded;
 }
 
-std::vector<int> foldsNearLandmarks(
-  const SemiRegularMesh& remesh, int landmarkCount, const std::vector<char>& folded)
+std::vector<int> nearestLandmarkOfTriangles(const SemiRegularMesh& remesh, int landmarkCount)
 {
   const int vertexCount = remesh.vertexCount();
-  if (folded.size() != remesh.triangles.size() || landmarkCount < 0 || landmarkCount > vertexCount)
+  if (landmarkCount < 0 || landmarkCount > vertexCount)
     return {};
-  std::vector<std::vector<int>> neighbours(vertexCount);
-  for (const Triangle& tri : remesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      if (tri[k] >= 0 && tri[k] < vertexCount && tri[(k + 1) % 3] >= 0 && tri[(k + 1) % 3] < vertexCount)
-      {
-        neighbours[tri[k]].push_back(tri[(k + 1) % 3]);
-        neighbours[tri[(k + 1) % 3]].push_back(tri[k]);
-      }
+  const std::vector<std::vector<int>> neighbours = vertexNeighbours(remesh);
   // Breadth first from all landmarks at once: every vertex keeps the
   // landmark that reaches it first.
   std::vector<int> distance(vertexCount, -1), nearest(vertexCount, -1), queue;
@@ -616,11 +622,9 @@ std::vector<int> foldsNearLandmarks(
         nearest[w] = nearest[queue[i]];
         queue.push_back(w);
       }
-  std::vector<int> counts(landmarkCount, 0);
-  for (std::size_t t = 0; t < folded.size(); ++t)
+  std::vector<int> result(remesh.triangles.size(), -1);
+  for (std::size_t t = 0; t < remesh.triangles.size(); ++t)
   {
-    if (!folded[t])
-      continue;
     int closest = -1;
     for (int v : remesh.triangles[t])
       if (v >= 0 && v < vertexCount && nearest[v] >= 0 &&
@@ -628,9 +632,29 @@ std::vector<int> foldsNearLandmarks(
           (distance[v] == distance[closest] && nearest[v] < nearest[closest])))
         closest = v;
     if (closest >= 0)
-      ++counts[nearest[closest]];
+      result[t] = nearest[closest];
   }
+  return result;
+}
+
+std::vector<int> foldsNearLandmarks(
+  const std::vector<int>& nearestLandmark, int landmarkCount, const std::vector<char>& folded)
+{
+  if (folded.size() != nearestLandmark.size() || landmarkCount < 0)
+    return {};
+  std::vector<int> counts(landmarkCount, 0);
+  for (std::size_t t = 0; t < folded.size(); ++t)
+    if (folded[t] && nearestLandmark[t] >= 0 && nearestLandmark[t] < landmarkCount)
+      ++counts[nearestLandmark[t]];
   return counts;
+}
+
+std::vector<int> foldsNearLandmarks(
+  const SemiRegularMesh& remesh, int landmarkCount, const std::vector<char>& folded)
+{
+  if (folded.size() != remesh.triangles.size() || landmarkCount < 0 || landmarkCount > remesh.vertexCount())
+    return {};
+  return foldsNearLandmarks(nearestLandmarkOfTriangles(remesh, landmarkCount), landmarkCount, folded);
 }
 
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,

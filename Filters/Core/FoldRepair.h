@@ -58,16 +58,27 @@ int countFoldedTriangles(
 std::vector<char> foldedTriangles(
   const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
 
+/// \brief For every remesh triangle, the landmark nearest to it: feature f
+///        (remesh vertex f, f < `landmarkCount`, the base domain's vertex
+///        count) nearest, in remesh edges, to its closest corner. Ties are
+///        broken by the connectivity alone. Depends on the connectivity
+///        only, so one call serves every model of a collection. Linear in
+///        the remesh; empty if `landmarkCount` is not between 0 and the
+///        remesh's vertex count.
+std::vector<int> nearestLandmarkOfTriangles(const SemiRegularMesh& remesh, int landmarkCount);
+
 /// \brief How many of the `folded` remesh triangles (1 per folded
 ///        triangle, in triangle order, as `foldedTriangles()` gives) lie
-///        nearest to each landmark: entry f counts those whose nearest
-///        landmark, in remesh edges from their corners, is feature f (remesh
-///        vertex f; `landmarkCount` is the base domain's vertex count). Ties
-///        are broken by the connectivity alone, the same way on every model.
-///        Says which landmark to move, or to add one beside, where folds
-///        stay after repair. Linear in the remesh; empty if `folded` does
-///        not have one entry per triangle or `landmarkCount` is not between
-///        0 and the remesh's vertex count.
+///        nearest to each of the `landmarkCount` landmarks, given
+///        `nearestLandmarkOfTriangles()`: says which landmark to move, or
+///        to add one beside, where folds stay after repair. Empty if the
+///        two lists differ in length or `landmarkCount` is negative.
+std::vector<int> foldsNearLandmarks(
+  const std::vector<int>& nearestLandmark, int landmarkCount, const std::vector<char>& folded);
+
+/// \brief The same for one remesh: `nearestLandmarkOfTriangles()`, then the
+///        counts; empty if `folded` does not have one entry per triangle or
+///        `landmarkCount` is not between 0 and the remesh's vertex count.
 std::vector<int> foldsNearLandmarks(
   const SemiRegularMesh& remesh, int landmarkCount, const std::vector<char>& folded);
 

@@ -113,6 +113,7 @@ struct SharedRemesh
   vtkSmartPointer<vtkIntArray> patchIds, levels, baseTriangles, vertexLevels;
   vtkSmartPointer<vtkDoubleArray> baseCoordinates;
   std::vector<int> featureIds; ///< f at vertex f, -1 elsewhere.
+  std::vector<int> nearestLandmark; ///< Per triangle, for FoldsNearFeature.
   int relaxationRounds = 0;         ///< Sample relaxation rounds made.
   double relaxationSeconds = 0.0;   ///< Their time (the whole collection's).
 
@@ -160,6 +161,7 @@ struct SharedRemesh
     featureIds.assign(vertices, -1);
     for (int f = 0; f < domain.mesh.vertexCount(); ++f)
       featureIds[f] = f;
+    nearestLandmark = cmp::nearestLandmarkOfTriangles(mesh, domain.mesh.vertexCount());
 
     vtkPointData* points = connectivity->GetPointData();
     points->AddArray(baseTriangles);
@@ -325,7 +327,7 @@ public:
     // Where folds stay after repair, the landmark to move or to add one
     // beside: one count per feature, in FeatureId order.
     const std::vector<int> foldsNear = cmp::foldsNearLandmarks(
-      shared.mesh, static_cast<int>(input_.domain().featureIds.size()), quality.folded);
+      shared.nearestLandmark, static_cast<int>(input_.domain().featureIds.size()), quality.folded);
     auto foldsNearFeature = vtkSmartPointer<vtkIntArray>::New();
     foldsNearFeature->SetName("FoldsNearFeature");
     foldsNearFeature->SetNumberOfValues(static_cast<vtkIdType>(foldsNear.size()));

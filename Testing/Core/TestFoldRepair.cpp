@@ -319,6 +319,20 @@ TEST(FoldRepair, CountsFoldsByTheirNearestLandmarkAlongRemeshEdges)
   for (int f = 0; f < landmarks; ++f)
     EXPECT_EQ(counts[f], f == 2 ? 4 : f == 5 ? 1 : 0) << "landmark " << f;
 
+  // The same in two steps, the first one shared by every model.
+  const std::vector<int> nearest = nearestLandmarkOfTriangles(remesh, landmarks);
+  ASSERT_EQ(nearest.size(), remesh.triangles.size());
+  for (std::size_t t = 0; t < remesh.triangles.size(); ++t)
+  {
+    const Triangle& tri = remesh.triangles[t];
+    if (std::find(tri.begin(), tri.end(), 2) != tri.end())
+      EXPECT_EQ(nearest[t], 2) << "triangle " << t;
+  }
+  EXPECT_EQ(nearest[beyond], 5);
+  EXPECT_EQ(foldsNearLandmarks(nearest, landmarks, folded), counts);
+  EXPECT_TRUE(foldsNearLandmarks(nearest, landmarks, std::vector<char>(3, 1)).empty());
+  EXPECT_TRUE(nearestLandmarkOfTriangles(remesh, remesh.vertexCount() + 1).empty());
+
   EXPECT_TRUE(foldsNearLandmarks(remesh, landmarks, std::vector<char>(3, 1)).empty());
   EXPECT_TRUE(foldsNearLandmarks(remesh, -1, folded).empty());
   EXPECT_EQ(foldsNearLandmarks(remesh, landmarks, std::vector<char>(remesh.triangles.size(), 0)),
