@@ -1,16 +1,21 @@
 """Renders Documentation/images/missed-tips.png: where each model's remesh
-misses its surface most, from a `consistent-remesh` report. Every model is
-drawn from its side (the first model looking along its narrowest
+lies farthest from its surface, from a `consistent-remesh` report. Every
+model is drawn from its side (the first model looking along its narrowest
 principal axis, legs down; the others turned the same way by their
-landmarks), with its landmarks in blue, the landmark nearest to the farthest
-point in green and that point (`hausdorff_point` in the report) in red,
-labelled with the model's name and its Hausdorff distance as a share of its
-bounding-box diagonal. On the SHREC'07 animals and Spot the red points sit
-on the tips of tails, horns and hoofs beyond the last landmark.
+landmarks), with its landmarks in blue, the landmark nearest to the
+farthest point in green and that point (`hausdorff_point` in the report)
+in red when it lies on the model (a part the remesh misses) or orange when
+it lies on the remesh, labelled with the model's name and its Hausdorff
+distance in percent of its bounding-box diagonal. On the SHREC'07 animals
+and Spot the red points sit on the tips of tails, horns and hoofs beyond
+the last landmark.
 
 Usage: pvpython render_missed_tips.py PLUGIN.so REPORT.json OUTPUT.png
 (REPORT.json written by, for example, `consistent-remesh --mesh ... --level
-5 --lower-stretch --relax-samples 4 --no-render --output DIR`).
+5 --lower-stretch --relax-samples 4 --no-render --output DIR`). The report
+names the meshes and landmark files as they were given to
+`consistent-remesh`: relative names are looked up from the current folder,
+then from the report's.
 """
 import json
 import os
@@ -31,7 +36,15 @@ COLUMNS = 4
 
 plugin, report_file, output = sys.argv[1:4]
 LoadPlugin(plugin, ns=globals())
-report = json.load(open(report_file))
+with open(report_file) as opened:
+    report = json.load(opened)
+
+
+def located(path):
+    """`path` as given to consistent-remesh, found from here or from the
+    report's folder."""
+    beside_report = os.path.join(os.path.dirname(os.path.abspath(report_file)), path)
+    return path if os.path.isabs(path) or os.path.exists(path) else beside_report
 
 
 def side_view(points):
@@ -58,8 +71,8 @@ def rotation_onto(moving, fixed):
 def read_model(model):
     """The model's surface proxy, its points and its landmarks' positions
     in FeatureId order."""
-    surface = LandmarksFromFile(Input=ConsistentMeshSurfaceReader(FileName=model["mesh"]),
-                                LandmarkFile=model["landmarks"])
+    surface = LandmarksFromFile(Input=ConsistentMeshSurfaceReader(FileName=located(model["mesh"])),
+                                LandmarkFile=located(model["landmarks"]))
     mesh = servermanager.Fetch(surface)
     points = vtk_to_numpy(mesh.GetPoints().GetData())
     feature = vtk_to_numpy(mesh.GetPointData().GetArray("FeatureId"))
@@ -74,8 +87,11 @@ def render_model(name, model, path, reference):
     so every animal faces the same way."""
     surface, points, feature, landmarks = read_model(model)
     reference_landmarks, (towards, up) = reference
-    rotation = rotation_onto(landmarks, reference_landmarks)
-    towards, up = rotation.T @ towards, rotation.T @ up
+    if len(landmarks) == len(reference_landmarks):
+        rotation = rotation_onto(landmarks, reference_landmarks)
+        towards, up = rotation.T @ towards, rotation.T @ up
+    else:  # landmarks that do not correspond: its own side view
+        towards, up = side_view(points)
     remesh = model["remesh"]
     nearest = remesh.get("hausdorff_nearest_landmark", -1)
     view = white_view(*TILE)
@@ -89,9 +105,11 @@ def render_model(name, model, path, reference):
         marker = Show(Sphere(Center=list(points[vertex]), Radius=extent * (0.018 if big else 0.008)), view)
         marker.ColorArrayName = [None, ""]
         marker.DiffuseColor = [0.1, 0.7, 0.1] if big else [0.2, 0.3, 0.9]
-    marker = Show(Sphere(Center=remesh["hausdorff_point"], Radius=extent * 0.018), view)
-    marker.ColorArrayName = [None, ""]
-    marker.DiffuseColor = [0.9, 0.1, 0.1]
+    if remesh.get("hausdorff_point") is not None:
+        marker = Show(Sphere(Center=remesh["hausdorff_point"], Radius=extent * 0.018), view)
+        marker.ColorArrayName = [None, ""]
+        on_model = remesh.get("hausdorff_point_on") == "input"
+        marker.DiffuseColor = [0.9, 0.1, 0.1] if on_model else [1.0, 0.55, 0.0]
     label = Show(Text(Text="%s: %.1f%%" % (name, 100.0 * remesh["hausdorff_per_diagonal"])), view)
     label.Color = [0, 0, 0]
     label.FontSize = 22
@@ -133,7 +151,10 @@ def tile(paths, output):
 
 
 folder = tempfile.mkdtemp()
-models = [(name, model) for name, model in report["models"].items() if model.get("status") == "ok"]
+models = [(name, model) for name, model in report["models"].items()
+          if model.get("status") == "ok" and "remesh" in model]
+if not models:
+    sys.exit("render_missed_tips.py: no remeshed model in " + report_file)
 _, first_points, _, first_landmarks = read_model(models[0][1])
 reference = (first_landmarks, side_view(first_points))
 paths = []
