@@ -144,8 +144,6 @@ struct VertexScore
   }
 };
 
-/// The remesh on the surface while it is repaired: where each vertex is,
-/// the surface normal under it, and which triangles and vertices touch it.
 /// The remesh vertices joined to each vertex by an edge, sorted, without
 /// repeats; edges with a corner outside the remesh are left out.
 std::vector<std::vector<int>> vertexNeighbours(const SemiRegularMesh& remesh)
@@ -170,6 +168,8 @@ std::vector<std::vector<int>> vertexNeighbours(const SemiRegularMesh& remesh)
   return neighbours;
 }
 
+/// The remesh on the surface while it is repaired: where each vertex is,
+/// the surface normal under it, and which triangles and vertices touch it.
 class FoldedRemesh
 {
 public:

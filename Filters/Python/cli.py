@@ -268,6 +268,12 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
     model.parameterized = surface
 
 
+def _spoken_list(items, conjunction):
+    """`items` (strings) as a sentence lists them: "a", "a and b", "a, b
+    and c" (with `conjunction` "and")."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " " + conjunction + " " + items[-1]
+
+
 def _folds_near_landmark(remesh):
     """The remesher's FoldsNearFeature as {"landmark": folds}, landmarks with
     folds only, most folds first: where folds stay after repair ({} for a
@@ -294,8 +300,7 @@ def fold_summary(model, repaired=True):
     near = remesh.get("folds_near_landmark")
     if not remesh.get("flipped_triangles") or not near:
         return None
-    where = ["%s (%d)" % item for item in near.items()]
-    where = where[0] if len(where) == 1 else ", ".join(where[:-1]) + " and " + where[-1]
+    where = _spoken_list(["%s (%d)" % item for item in near.items()], "and")
     folds = remesh["flipped_triangles"]
     line = "%s: %d remesh triangle%s folded, nearest landmark%s %s" % (
         model.name, folds, " is" if folds == 1 else "s are", "" if len(near) == 1 else "s", where)
@@ -349,8 +354,7 @@ def distance_summary(model, report):
         remedies.append("--level 8 --adaptive-tolerance %g" % ADAPTIVE_REMEDY_TOLERANCE)
     if not remedies:
         return line + " (see known issues)"
-    listed = remedies[0] if len(remedies) == 1 else ", ".join(remedies[:-1]) + " or " + remedies[-1]
-    return line + " (%s can help: see known issues)" % listed
+    return line + " (%s can help: see known issues)" % _spoken_list(remedies, "or")
 
 
 def _significant(value, digits=6):
