@@ -25,7 +25,7 @@ import tempfile
 import numpy as np
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting style)
-from render_common import white_view
+from render_common import aim, show_grey, white_view
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkImagingCore import vtkImageConstantPad
@@ -81,11 +81,19 @@ def read_model(model):
     return surface, points, feature, points[order]
 
 
-def render_model(name, model, path, reference):
-    """One tile, seen the way `reference` (the first model's landmarks and
-    side view) is seen once this model's landmarks are turned onto its own,
-    so every animal faces the same way."""
-    surface, points, feature, landmarks = read_model(model)
+def show_marker(centre, radius, colour, view):
+    """A ball of the given colour at `centre`."""
+    marker = Show(Sphere(Center=list(centre), Radius=radius), view)
+    marker.ColorArrayName = [None, ""]
+    marker.DiffuseColor = colour
+
+
+def render_model(name, model, read, path, reference):
+    """One tile of `model` (`read` is what read_model() gave), seen the way
+    `reference` (the first model's landmarks and side view) is seen once
+    this model's landmarks are turned onto its own, so every animal faces
+    the same way."""
+    surface, points, feature, landmarks = read
     reference_landmarks, (towards, up) = reference
     if len(landmarks) == len(reference_landmarks):
         rotation = rotation_onto(landmarks, reference_landmarks)
@@ -95,31 +103,22 @@ def render_model(name, model, path, reference):
     remesh = model["remesh"]
     nearest = remesh.get("hausdorff_nearest_landmark", -1)
     view = white_view(*TILE)
-    shown = Show(surface, view)
-    shown.ColorArrayName = [None, ""]
-    shown.DiffuseColor = [0.8, 0.8, 0.8]
-    shown.Opacity = 0.6  # markers behind the surface show through
+    show_grey(surface, view, edges=False).Opacity = 0.6  # markers behind the surface show through
     extent = np.linalg.norm(points.max(axis=0) - points.min(axis=0))
     for vertex in np.flatnonzero(feature >= 0):
         big = feature[vertex] == nearest
-        marker = Show(Sphere(Center=list(points[vertex]), Radius=extent * (0.018 if big else 0.008)), view)
-        marker.ColorArrayName = [None, ""]
-        marker.DiffuseColor = [0.1, 0.7, 0.1] if big else [0.2, 0.3, 0.9]
+        show_marker(points[vertex], extent * (0.018 if big else 0.008), [0.1, 0.7, 0.1] if big else [0.2, 0.3, 0.9],
+                    view)
     if remesh.get("hausdorff_point") is not None:
-        marker = Show(Sphere(Center=remesh["hausdorff_point"], Radius=extent * 0.018), view)
-        marker.ColorArrayName = [None, ""]
         on_model = remesh.get("hausdorff_point_on") == "input"
-        marker.DiffuseColor = [0.9, 0.1, 0.1] if on_model else [1.0, 0.55, 0.0]
+        show_marker(remesh["hausdorff_point"], extent * 0.018, [0.9, 0.1, 0.1] if on_model else [1.0, 0.55, 0.0],
+                    view)
     label = Show(Text(Text="%s: %.1f%%" % (name, 100.0 * remesh["hausdorff_per_diagonal"])), view)
     label.Color = [0, 0, 0]
     label.FontSize = 22
     label.WindowLocation = "Upper Left Corner"
     centre = 0.5 * (points.min(axis=0) + points.max(axis=0))
-    view.CameraFocalPoint = list(centre)
-    view.CameraPosition = list(centre + 3.0 * extent * towards)
-    view.CameraViewUp = list(up)
-    view.CameraParallelProjection = 1
-    view.CameraParallelScale = 0.42 * extent
+    aim(view, centre, centre + 3.0 * extent * towards, up=up, scale=0.42 * extent)
     SaveScreenshot(path, view, ImageResolution=list(TILE))
     Delete(view)
 
@@ -155,11 +154,12 @@ models = [(name, model) for name, model in report["models"].items()
           if model.get("status") == "ok" and "remesh" in model]
 if not models:
     sys.exit("render_missed_tips.py: no remeshed model in " + report_file)
-_, first_points, _, first_landmarks = read_model(models[0][1])
-reference = (first_landmarks, side_view(first_points))
-paths = []
+paths, reference = [], None
 for name, model in models:
+    read = read_model(model)
+    if reference is None:  # the first model: the side view every tile follows
+        reference = (read[3], side_view(read[1]))
     paths.append(os.path.join(folder, name + ".png"))
-    render_model(name, model, paths[-1], reference)
+    render_model(name, model, read, paths[-1], reference)
 tile(paths, output)
 print("wrote", output)
