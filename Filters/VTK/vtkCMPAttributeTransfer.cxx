@@ -1,6 +1,6 @@
 #include "vtkCMPAttributeTransfer.h"
 
-#include "AttributeTransfer.h"
+#include <cmp/analysis/AttributeTransfer.h>
 #include "vtkCMPCollection.h"
 #include "vtkCMPParameterizedInput.h"
 #include "vtkCMPPolyDataBridge.h"

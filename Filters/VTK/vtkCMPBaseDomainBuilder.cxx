@@ -1,6 +1,6 @@
 #include "vtkCMPBaseDomainBuilder.h"
 
-#include "BaseDomainBuilder.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkFieldData.h>

@@ -4,7 +4,7 @@
 ///        leaves of a vtkMultiBlockDataSet, and an output of the same shape;
 ///        shared by the filters that take collections (private header).
 
-#include "Status.h"
+#include <cmp/mesh/Status.h>
 
 #include <vtkSmartPointer.h>
 

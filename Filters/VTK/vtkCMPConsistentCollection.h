@@ -4,10 +4,10 @@
 ///        vtkPolyData or a multiblock (possibly spread over ranks), for the
 ///        filters of the paper's Section 3 (private header, not wrapped).
 
-#include "Communicator.h"
-#include "ProcrustesAlignment.h"
-#include "Status.h"
-#include "TriangleMesh.h"
+#include <cmp/numerics/Communicator.h>
+#include <cmp/analysis/ProcrustesAlignment.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
 #include "vtkCMPCollection.h"
 
 #include <vtkSmartPointer.h>

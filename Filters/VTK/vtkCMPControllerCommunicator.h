@@ -4,7 +4,7 @@
 ///        the collection algorithms combine models spread over the ranks of
 ///        `mpirun ... pvbatch` (private header, not wrapped).
 
-#include "Communicator.h"
+#include <cmp/numerics/Communicator.h>
 
 class vtkMultiProcessController;
 

@@ -1,7 +1,7 @@
 #include "vtkCMPFeatureNetTracer.h"
 
-#include "LayoutValidator.h"
-#include "NetTracer.h"
+#include <cmp/layout/LayoutValidator.h>
+#include <cmp/layout/NetTracer.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkCellData.h>

@@ -1,6 +1,6 @@
 #include "vtkCMPLandmarkWriter.h"
 
-#include "Landmarks.h"
+#include <cmp/io/Landmarks.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkDataArray.h>

@@ -1,6 +1,6 @@
 #include "vtkCMPLandmarksFromSelection.h"
 
-#include "Landmarks.h"
+#include <cmp/io/Landmarks.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkConvertSelection.h>

@@ -1,6 +1,6 @@
 #include "vtkCMPMeshPCA.h"
 
-#include "MeshPCA.h"
+#include <cmp/analysis/MeshPCA.h>
 #include "vtkCMPConsistentCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPPolyDataBridge.h"

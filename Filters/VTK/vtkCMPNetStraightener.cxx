@@ -1,10 +1,10 @@
 #include "vtkCMPNetStraightener.h"
 
-#include "CurveSpread.h"
-#include "LayoutValidator.h"
-#include "NetStraightener.h"
-#include "PatchLayout.h"
-#include "PatchParameterization.h"
+#include <cmp/layout/CurveSpread.h>
+#include <cmp/layout/LayoutValidator.h>
+#include <cmp/map/NetStraightener.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/map/PatchParameterization.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkCellData.h>

@@ -1,7 +1,7 @@
 #include "vtkCMPParameterizedInput.h"
 
-#include "LayoutValidator.h"
-#include "SurfaceCheck.h"
+#include <cmp/layout/LayoutValidator.h>
+#include <cmp/mesh/SurfaceCheck.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkDataArray.h>

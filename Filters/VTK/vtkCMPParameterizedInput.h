@@ -5,13 +5,13 @@
 ///        the filters that work through the parameterization (private
 ///        header, not wrapped).
 
-#include "AttributeTransfer.h"
-#include "BaseDomain.h"
-#include "PatchLayout.h"
-#include "PatchParameterization.h"
-#include "SemiRegularRemesher.h"
-#include "Status.h"
-#include "TriangleMesh.h"
+#include <cmp/analysis/AttributeTransfer.h>
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/map/PatchParameterization.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
 
 #include <string>
 #include <vector>

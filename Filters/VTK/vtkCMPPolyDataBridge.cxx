@@ -1,6 +1,6 @@
 #include "vtkCMPPolyDataBridge.h"
 
-#include "SurfaceCheck.h"
+#include <cmp/mesh/SurfaceCheck.h>
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>

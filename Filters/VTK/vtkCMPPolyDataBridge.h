@@ -3,12 +3,12 @@
 /// \brief Conversions between vtkPolyData and the core's types, shared by
 ///        all filters of the module (private header, not wrapped).
 
-#include "BaseDomain.h"
-#include "Landmarks.h"
-#include "NetStraightener.h"
-#include "PatchLayout.h"
-#include "Status.h"
-#include "TriangleMesh.h"
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/io/Landmarks.h>
+#include <cmp/map/NetStraightener.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
 
 #include <vtkSmartPointer.h>
 

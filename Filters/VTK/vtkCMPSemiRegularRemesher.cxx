@@ -1,11 +1,11 @@
 #include "vtkCMPSemiRegularRemesher.h"
 
-#include "BaseDomainBuilder.h" // triangleShapeQuality
-#include "FoldRepair.h"
-#include "PatchLayout.h"
-#include "SampleRelaxation.h"
-#include "SemiRegularRemesher.h"
-#include "SurfaceDistance.h"
+#include <cmp/basedomain/BaseDomainBuilder.h> // triangleShapeQuality
+#include <cmp/remesh/FoldRepair.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/remesh/SampleRelaxation.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/mesh/SurfaceDistance.h>
 #include "vtkCMPCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPParameterizedInput.h"

@@ -1,6 +1,6 @@
 #include "vtkCMPShapeBlend.h"
 
-#include "ShapeBlend.h"
+#include <cmp/analysis/ShapeBlend.h>
 #include "vtkCMPConsistentCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPPolyDataBridge.h"

@@ -1,6 +1,6 @@
 #include "vtkCMPSurfaceReader.h"
 
-#include "MeshFile.h"
+#include <cmp/io/MeshFile.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkAbstractPolyDataReader.h>

@@ -1,7 +1,7 @@
 #include "vtkCMPWaveletDetailTransfer.h"
 
-#include "DetailTransfer.h"
-#include "LoopWavelet.h"
+#include <cmp/analysis/DetailTransfer.h>
+#include <cmp/analysis/LoopWavelet.h>
 #include "vtkCMPConsistentCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPPolyDataBridge.h"

@@ -1,7 +1,7 @@
 #include "BenchmarkShapeAnalysis.h"
 
-#include "MeshPCA.h"
-#include "ProcrustesAlignment.h"
+#include <cmp/analysis/MeshPCA.h>
+#include <cmp/analysis/ProcrustesAlignment.h>
 #include "TestShapes.h"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 ///        size the issue asks for: alignment and principal components of
 ///        100 models of 40,000 vertices.
 
-#include "Status.h"
+#include <cmp/mesh/Status.h>
 
 #include <string>
 

@@ -1,11 +1,11 @@
 #include "BenchmarkStages.h"
 
-#include "FoldRepair.h"
+#include <cmp/remesh/FoldRepair.h>
 
-#include "LoopWavelet.h"
-#include "SampleRelaxation.h"
-#include "Subdivision.h"
-#include "SurfaceDistance.h"
+#include <cmp/analysis/LoopWavelet.h>
+#include <cmp/remesh/SampleRelaxation.h>
+#include <cmp/mesh/Subdivision.h>
+#include <cmp/mesh/SurfaceDistance.h>
 
 #include <chrono>
 #include <cmath>

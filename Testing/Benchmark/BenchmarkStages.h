@@ -11,17 +11,17 @@
 ///     error), `setFigure(ctx.figures, "name", value)` them in the stage.
 /// The runner, the Markdown tables and the CSV pick both up by themselves.
 
-#include "BaseDomain.h"
-#include "BaseDomainBuilder.h"
-#include "Landmarks.h"
-#include "MeshFile.h"
-#include "NetStraightener.h"
-#include "NetTracer.h"
-#include "PatchParameterization.h"
-#include "SemiRegularRemesher.h"
-#include "Status.h"
-#include "SurfaceCheck.h"
-#include "TriangleMesh.h"
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/io/Landmarks.h>
+#include <cmp/io/MeshFile.h>
+#include <cmp/map/NetStraightener.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/map/PatchParameterization.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/SurfaceCheck.h>
+#include <cmp/mesh/TriangleMesh.h>
 
 #include <functional>
 #include <optional>

@@ -1,6 +1,6 @@
-#include "BaseDomainBuilder.h"
-#include "MeshFile.h"
-#include "SurfaceCheck.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/io/MeshFile.h>
+#include <cmp/mesh/SurfaceCheck.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 

@@ -1,4 +1,4 @@
-#include "Communicator.h"
+#include <cmp/numerics/Communicator.h>
 #include "ThreadCommunicator.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "CurveSpread.h"
+#include <cmp/layout/CurveSpread.h>
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>

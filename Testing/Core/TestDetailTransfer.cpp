@@ -1,8 +1,8 @@
-#include "BaseDomainBuilder.h"
-#include "DetailTransfer.h"
-#include "LoopWavelet.h"
-#include "SemiRegularRemesher.h"
-#include "SurfaceDistance.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/analysis/DetailTransfer.h>
+#include <cmp/analysis/LoopWavelet.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/mesh/SurfaceDistance.h>
 #include "TestMeshes.h"
 
 #include <Eigen/Geometry>

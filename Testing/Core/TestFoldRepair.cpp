@@ -1,5 +1,5 @@
-#include "FoldRepair.h"
-#include "SurfaceDistance.h"
+#include <cmp/remesh/FoldRepair.h>
+#include <cmp/mesh/SurfaceDistance.h>
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "Landmarks.h"
-#include "MeshFile.h"
+#include <cmp/io/Landmarks.h>
+#include <cmp/io/MeshFile.h>
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>

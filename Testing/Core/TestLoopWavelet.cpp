@@ -1,6 +1,6 @@
-#include "BaseDomainBuilder.h"
-#include "LoopWavelet.h"
-#include "SemiRegularRemesher.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/analysis/LoopWavelet.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
 #include "TestMeshes.h"
 
 #include <Eigen/Cholesky>

@@ -1,5 +1,5 @@
-#include "MeshFile.h"
-#include "SurfaceCheck.h"
+#include <cmp/io/MeshFile.h>
+#include <cmp/mesh/SurfaceCheck.h>
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>

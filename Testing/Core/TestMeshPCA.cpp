@@ -1,6 +1,6 @@
-#include "MeshFile.h"
-#include "MeshPCA.h"
-#include "ProcrustesAlignment.h"
+#include <cmp/io/MeshFile.h>
+#include <cmp/analysis/MeshPCA.h>
+#include <cmp/analysis/ProcrustesAlignment.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 #include "ThreadCommunicator.h"

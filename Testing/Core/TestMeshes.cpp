@@ -1,10 +1,10 @@
 #include "TestMeshes.h"
 
-#include "BaseDomainBuilder.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
 
-#include "NetStraightener.h"
-#include "NetTracer.h"
-#include "Subdivision.h"
+#include <cmp/map/NetStraightener.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/mesh/Subdivision.h>
 
 #include <gtest/gtest.h>
 

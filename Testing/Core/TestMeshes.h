@@ -3,15 +3,15 @@
 /// \brief Small meshes the core tests build in code, and access to the
 ///        shared real data.
 
-#include "BaseDomain.h"
-#include "Landmarks.h"
-#include "MeshFile.h"
-#include "PatchLayout.h"
-#include "PatchParameterization.h"
-#include "SemiRegularRemesher.h"
-#include "Status.h"
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/io/Landmarks.h>
+#include <cmp/io/MeshFile.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/map/PatchParameterization.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/mesh/Status.h>
 #include "TestData.h"
-#include "TriangleMesh.h"
+#include <cmp/mesh/TriangleMesh.h>
 
 #include <string>
 #include <vector>

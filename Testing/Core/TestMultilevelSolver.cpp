@@ -1,9 +1,9 @@
-#include "BaseDomainBuilder.h"
-#include "LayoutValidator.h"
-#include "MeanValueSystem.h"
-#include "MultilevelSolver.h"
-#include "NetTracer.h"
-#include "Subdivision.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/layout/LayoutValidator.h>
+#include <cmp/numerics/MeanValueSystem.h>
+#include <cmp/numerics/MultilevelSolver.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/mesh/Subdivision.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 

@@ -1,9 +1,9 @@
-#include "BaseDomainBuilder.h"
-#include "LayoutValidator.h"
-#include "MeshFile.h"
-#include "NetStraightener.h"
-#include "NetTracer.h"
-#include "PatchParameterization.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/layout/LayoutValidator.h>
+#include <cmp/io/MeshFile.h>
+#include <cmp/map/NetStraightener.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/map/PatchParameterization.h>
 #include "TestMeshes.h"
 
 #include <Eigen/Geometry>

@@ -1,7 +1,7 @@
-#include "BaseDomainBuilder.h"
-#include "MeshFile.h"
-#include "NetTracer.h"
-#include "LayoutValidator.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/io/MeshFile.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/layout/LayoutValidator.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 

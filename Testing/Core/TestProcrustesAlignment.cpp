@@ -1,4 +1,4 @@
-#include "ProcrustesAlignment.h"
+#include <cmp/analysis/ProcrustesAlignment.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 #include "ThreadCommunicator.h"

@@ -1,5 +1,5 @@
-#include "SampleRelaxation.h"
-#include "SurfaceDistance.h"
+#include <cmp/remesh/SampleRelaxation.h>
+#include <cmp/mesh/SurfaceDistance.h>
 #include "TestMeshes.h"
 #include "ThreadCommunicator.h"
 

@@ -1,8 +1,8 @@
-#include "BaseDomainBuilder.h"
-#include "MeshFile.h"
-#include "SemiRegularRemesher.h"
-#include "SurfaceCheck.h"
-#include "SurfaceDistance.h"
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/io/MeshFile.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/mesh/SurfaceCheck.h>
+#include <cmp/mesh/SurfaceDistance.h>
 #include "TestMeshes.h"
 
 #include <Eigen/Geometry>

@@ -1,5 +1,5 @@
-#include "ProcrustesAlignment.h"
-#include "ShapeBlend.h"
+#include <cmp/analysis/ProcrustesAlignment.h>
+#include <cmp/analysis/ShapeBlend.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 #include "ThreadCommunicator.h"

@@ -4,9 +4,9 @@
 ///        PCA and blending tests: smooth deformations and similarity
 ///        motions of one mesh, and their split over ranks.
 
-#include "ProcrustesAlignment.h"
-#include "ShapeCollection.h"
-#include "TriangleMesh.h"
+#include <cmp/analysis/ProcrustesAlignment.h>
+#include <cmp/analysis/ShapeCollection.h>
+#include <cmp/mesh/TriangleMesh.h>
 
 #include <Eigen/Core>
 

@@ -1,5 +1,5 @@
-#include "Subdivision.h"
-#include "SurfaceCheck.h"
+#include <cmp/mesh/Subdivision.h>
+#include <cmp/mesh/SurfaceCheck.h>
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>

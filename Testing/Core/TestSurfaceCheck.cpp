@@ -1,5 +1,5 @@
-#include "SurfaceCheck.h"
-#include "MeshFile.h"
+#include <cmp/mesh/SurfaceCheck.h>
+#include <cmp/io/MeshFile.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 

@@ -1,4 +1,4 @@
-#include "SurfaceDistance.h"
+#include <cmp/mesh/SurfaceDistance.h>
 #include "TestMeshes.h"
 
 #include <Eigen/Geometry>

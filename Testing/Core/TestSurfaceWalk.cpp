@@ -1,4 +1,4 @@
-#include "SurfaceWalk.h"
+#include <cmp/mesh/SurfaceWalk.h>
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "SymmetricDirichletRelaxation.h"
+#include <cmp/numerics/SymmetricDirichletRelaxation.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 ///        that the core's distributed code paths run and are compared with
 ///        one process without MPI.
 
-#include "Communicator.h"
+#include <cmp/numerics/Communicator.h>
 
 #include <functional>
 

@@ -1,0 +1,65 @@
+#pragma once
+/// \file Landmarks.h
+/// \brief Landmark files and the `FeatureId` convention.
+///
+/// A landmark set is the list of mesh vertices that carry features
+/// 0..F-1, in feature order. On a surface it is stored as the point array
+/// `FeatureId`: -1 everywhere except at the F landmark vertices.
+
+#include <cmp/io/MeshFile.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+
+#include <string>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Landmark vertex of each feature: `vertexOfFeature[f]` is the mesh
+///        vertex that carries feature f.
+using LandmarkList = std::vector<int>;
+
+/// \brief Reads a landmark file and returns mesh vertex ids in feature order.
+///
+/// The format follows the extension:
+/// - `.vts`: `vertex_id x y z` per line; the coordinates must match the
+///   vertex (catches a landmark file paired with the wrong mesh);
+/// - `.csv`: `x,y,z` per row (an optional header row is skipped), each
+///   snapped to the nearest vertex;
+/// - anything else (`.pinned`, `.txt`, ...): `lk ID` or `ID` per line.
+///
+/// Ids are 0-based indices into the file's own point list; `fileToMeshPoint`
+/// (from `MeshFileData`, may be empty for identity) maps them to the welded
+/// mesh. `#` starts a comment. Checks that ids are in range and distinct.
+Status readLandmarkFile(const std::string& path, const TriangleMesh& mesh, const std::vector<int>& fileToMeshPoint,
+  LandmarkList& landmarks);
+
+/// \brief The text of a landmark file for `landmarks` on `mesh`, in the
+///        format `readLandmarkFile` reads for `path`'s extension (`.vts`:
+///        `id x y z`, `.csv`: a header row then `x,y,z`, else `lk id`), so
+///        that reading it back gives the same landmarks.
+///
+/// `fileToMeshPoint` (may be empty for identity) is the same map the reader
+/// takes: ids are written as the first file point of each mesh vertex, so
+/// the file pairs with the original mesh file even when points were welded.
+Status formatLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
+  const std::vector<int>& fileToMeshPoint, std::string& text);
+
+/// \brief Writes `formatLandmarkFile`'s text to `path`.
+Status writeLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
+  const std::vector<int>& fileToMeshPoint);
+
+/// \brief Checks that every landmark is a valid vertex, no vertex carries two
+///        features, and (when `expectedCount >= 0`) that there are exactly
+///        `expectedCount` of them.
+Status validateLandmarks(const LandmarkList& landmarks, int vertexCount, int expectedCount = -1);
+
+/// \brief The per-vertex `FeatureId` values for a landmark list.
+std::vector<int> featureIdsOf(const LandmarkList& landmarks, int vertexCount);
+
+/// \brief Reads landmarks back from per-vertex `FeatureId` values, checking
+///        that they are -1 or 0..F-1 and that each feature occurs exactly once.
+Status landmarksFromFeatureIds(const std::vector<int>& featureIds, LandmarkList& landmarks);
+
+} // namespace cmp

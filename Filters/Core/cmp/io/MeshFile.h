@@ -1,0 +1,49 @@
+#pragma once
+/// \file MeshFile.h
+/// \brief OFF and OBJ parsing and point welding, without VTK.
+
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief A surface as read from a file, before or after welding.
+struct MeshFileData
+{
+  TriangleMesh mesh; ///< Positions and triangles (polygons fan-triangulated).
+  /// \brief Texture coordinates of each triangle's three corners, when the
+  ///        file has them for every face (OBJ `f v/vt`); otherwise empty.
+  ///        Per corner, so texture seams need no duplicated points.
+  std::vector<std::array<Eigen::Vector2d, 3>> cornerTexCoords;
+  /// \brief For every point index in the file, the point it became after
+  ///        welding. Landmark files index the file's points, so they are
+  ///        mapped through this.
+  std::vector<int> fileToMeshPoint;
+};
+
+/// \brief Reads an OFF file (`OFF`, counts, points, polygons).
+Status readOFF(const std::string& path, MeshFileData& out);
+
+/// \brief Reads the `v`, `vt` and `f` records of an OBJ file.
+Status readOBJ(const std::string& path, MeshFileData& out);
+
+/// \brief Merges points with identical coordinates and renumbers triangles.
+///
+/// Keeps the first occurrence's order so that an already welded file keeps
+/// its point ids. Updates `fileToMeshPoint` (a map from file points to
+/// current points; empty means the identity) and returns the number of
+/// points removed.
+/// O(n log n).
+int weldIdenticalPoints(MeshFileData& data);
+
+/// \brief Lower-cased extension of `path` without the dot ("" if none).
+std::string fileExtension(const std::string& path);
+
+} // namespace cmp

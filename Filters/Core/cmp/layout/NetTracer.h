@@ -1,0 +1,68 @@
+#pragma once
+/// \file NetTracer.h
+/// \brief Traces on a surface a net of curves topologically equivalent to
+///        the base domain (the paper's Sections 2.1 and 2.2).
+
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/layout/FeatureParameterization.h>
+#include <cmp/io/Landmarks.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Tuning of `traceFeatureNet()`.
+struct NetTracerOptions
+{
+  /// \brief How strongly curves follow the ridge of the harmonic
+  ///        parameterization (K = pi[f] + pi[f']) rather than the shortest
+  ///        path: each edge costs length * (1 + weight * (1 - K)). 0 gives
+  ///        restricted shortest paths.
+  double parameterizationWeight = 2.0;
+  /// \brief How the harmonic parameterization behind that ridge is solved.
+  FeatureCoordinateOptions featureCoordinates;
+  /// \brief Run the paper's swirl detector before accepting a curve.
+  bool detectSwirls = true;
+  /// \brief How often one curve may be postponed by the swirl detector
+  ///        before it is accepted anyway (keeps the loop finite).
+  int maxPenalties = 2;
+  /// \brief A postponed curve's priority is multiplied by this.
+  double penaltyFactor = 2.0;
+  /// \brief Called with the fraction of curves inserted, in [0, 1].
+  std::function<void(double)> progress;
+};
+
+/// \brief Figures about a tracing run.
+struct NetTracerReport
+{
+  double netLength = 0.0; ///< Sum of the curves' lengths.
+  int traces = 0;         ///< Brush fires run to find curves (first tries and retraces).
+  int retraced = 0;       ///< Tentative curves found invalid when their turn came.
+  int penalised = 0;      ///< Curves postponed by the swirl detector.
+  int splitEdges = 0;     ///< Mesh edges split to make room between curves.
+};
+
+/// \brief Traces, for every edge of `domain`, a curve on `surface` between
+///        the landmarks of its two base vertices, such that the net is
+///        topologically equivalent to `domain`.
+///
+/// Curves run along mesh edges, never cross and meet only at landmarks; at
+/// every landmark they leave in the base domain's cyclic order. A spanning
+/// tree of the base domain is traced first (so no landmark can be encircled),
+/// shortest tentative curves first, re-validated and re-traced when earlier
+/// curves got in the way. Before each curve the mesh is refined where two
+/// curves touch (every non-curve edge between occupied vertices is split), so
+/// the restricted brush fire always finds room and the proof of the paper
+/// applies. `surface` must pass `checkSurface()`; `landmarks[f]` is the
+/// vertex of feature f and `domain.featureIds` names the feature of each base
+/// vertex.
+Status traceFeatureNet(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
+  TracedNet& net, const NetTracerOptions& options = {}, NetTracerReport* report = nullptr);
+
+} // namespace cmp

@@ -1,0 +1,98 @@
+#pragma once
+/// \file NetStraightener.h
+/// \brief The paper's edge straightening (Section 2.2, "Edge
+///        Straightening"): the curves around every landmark are replaced by
+///        straight lines of a planar map of the landmark's star.
+
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/mesh/Status.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief A point of the straightener's input surface as a convex
+///        combination of at most three of its vertices (unused slots have
+///        vertex -1 and weight 0). One vertex: that vertex; two: a point of
+///        their edge; three: a point inside their triangle.
+struct SurfacePoint
+{
+  std::array<int, 3> vertex{ { -1, -1, -1 } }; ///< Input vertices.
+  std::array<double, 3> weight{ { 0.0, 0.0, 0.0 } }; ///< Their weights, summing to 1.
+
+  /// \brief The input vertex `v` itself.
+  static SurfacePoint at(int v)
+  {
+    SurfacePoint p;
+    p.vertex[0] = v;
+    p.weight[0] = 1.0;
+    return p;
+  }
+  /// \brief Number of input vertices with a nonzero weight.
+  int supportSize() const { return (vertex[0] >= 0) + (vertex[1] >= 0) + (vertex[2] >= 0); }
+};
+
+/// \brief Tuning of `straightenNet()`.
+struct NetStraightenerOptions
+{
+  /// \brief At most this many sweeps over all landmarks.
+  int maxSweeps = 5;
+  /// \brief Stop when a sweep changes the total net length by less than
+  ///        this fraction.
+  double tolerance = 0.002;
+  /// \brief A straight line that crosses a mesh edge within this fraction
+  ///        of the edge's length from a free vertex goes through that vertex
+  ///        instead, so no sliver triangles are cut.
+  double snapTolerance = 0.1;
+  /// \brief Called with the fraction of work done, in [0, 1].
+  std::function<void(double)> progress;
+};
+
+/// \brief Figures about a straightening run.
+struct NetStraightenerReport
+{
+  double netLengthBefore = 0.0;     ///< Total curve length of the input net.
+  double netLengthAfter = 0.0;      ///< Total curve length of the result.
+  double areaVariationBefore = 0.0; ///< Coefficient of variation of the input's patch areas.
+  double areaVariationAfter = 0.0;  ///< The same for the result.
+  int sweeps = 0;                   ///< Sweeps run.
+  int skippedStars = 0;  ///< Landmark steps that kept their curves (numerically degenerate star map).
+  int removedVertices = 0; ///< Vertices left behind by replaced curves and removed again.
+};
+
+/// \brief A straightened net: the layout on a re-triangulated surface and
+///        where every new vertex and triangle lies on the input surface.
+struct StraightenedNet
+{
+  TracedNet net; ///< Layout; its mesh is the input surface cut along straight curves.
+  /// \brief For every vertex of `net.mesh`, its place on the input surface
+  ///        (the traced surface given to `straightenNet()`): point data is
+  ///        carried with these weights.
+  std::vector<SurfacePoint> inputPoint;
+  /// \brief For every triangle of `net.mesh`, the input triangle it lies in.
+  std::vector<int> inputTriangle;
+};
+
+/// \brief Straightens every curve of `traced` as the paper does: for each
+///        landmark i, the patches around i are mapped to the plane (the
+///        neighbours of i on a convex polygon inscribed in the unit circle,
+///        angles proportional to the lengths of the curves between them,
+///        those curves straight by arc length, the interior by Floater's mean
+///        value weights), and the curves from i are replaced by the images of
+///        the straight segments, cutting the triangles they cross.
+///
+/// Sweeps repeat until the net length changes by less than
+/// `options.tolerance`. Every step keeps the layout topologically
+/// equivalent to `domain` (a step that would not, on numerically
+/// degenerate input, keeps the old curves). Vertices left behind by
+/// replaced curves are removed again where that leaves the surface
+/// unchanged. At the end, every non-curve edge between two curve vertices is
+/// split, so every patch can be parameterized bijectively.
+Status straightenNet(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out,
+  const NetStraightenerOptions& options = {}, NetStraightenerReport* report = nullptr);
+
+} // namespace cmp

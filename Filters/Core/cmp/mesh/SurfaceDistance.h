@@ -1,0 +1,100 @@
+#pragma once
+/// \file SurfaceDistance.h
+/// \brief How far apart two surfaces are: exact closest-point queries on a
+///        triangle mesh and the sampled Hausdorff and mean distances built on
+///        them, to measure how faithfully a remesh follows its input.
+
+#include <cmp/mesh/TriangleMesh.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Closest-point queries on a triangle mesh through an axis-aligned bounding-box tree.
+///
+/// Degenerate (zero-area) triangles are treated as the segments they
+/// collapse to, so they never produce NaN. Coordinates must be finite (as
+/// `checkSurface()` ensures). A mesh without triangles answers every query
+/// with triangle -1 and an infinite distance.
+class ClosestPointQuery
+{
+public:
+  /// \brief The closest point of the mesh to a query point.
+  struct Result
+  {
+    int triangle = -1;                                    ///< Triangle holding the closest point.
+    Vec3 point = Vec3::Zero();                            ///< The closest point.
+    std::array<double, 3> barycentric{ { 0.0, 0.0, 0.0 } }; ///< Its coordinates in `triangle` (vertex order).
+    double distance = 0.0;                                ///< Distance to the query point.
+  };
+
+  /// \brief Builds the tree (O(n log n)); the mesh must outlive the query.
+  explicit ClosestPointQuery(const TriangleMesh& mesh);
+
+  /// \brief The closest point to `p` (exact point-triangle distance, branch and bound).
+  Result closest(const Vec3& p) const;
+
+private:
+  /// \brief A box of the tree: a leaf holds `order_[begin, end)`, an inner
+  ///        node has its two children at `left` and `left + 1`.
+  struct Node
+  {
+    Vec3 lo, hi;
+    int begin = 0, end = 0;
+    int left = -1;
+  };
+
+  /// \brief Fills `node` with the triangles `order_[begin, end)` and splits
+  ///        it at the median centroid along its longest axis.
+  void build(const TriangleMesh& mesh, int node, int begin, int end, const std::vector<Vec3>& centroids);
+  /// \brief Squared distance from `p` to the box of `node` (0 inside).
+  static double boxDistanceSquared(const Node& node, const Vec3& p);
+  /// \brief Replaces `best` by a closer point of a triangle of the leaf `node`.
+  void testLeaf(const Node& node, const Vec3& p, Result& best, double& bestSquared) const;
+
+  std::vector<Node> nodes_;
+  std::vector<int> order_; ///< Triangle ids, grouped by leaf.
+  /// \brief Corners of `order_[i]`, copied next to each other so a leaf's
+  ///        triangles are read from one place instead of three indirections.
+  std::vector<std::array<Vec3, 3>> corners_;
+  std::vector<char> flat_; ///< Whether `order_[i]` is too thin to have a normal.
+};
+
+/// \brief Sampled one- and two-sided distances between two surfaces.
+struct SurfaceDistance
+{
+  double aToB = 0.0;     ///< max over samples of a of the distance to b.
+  double bToA = 0.0;     ///< max over samples of b of the distance to a.
+  double meanAToB = 0.0; ///< area-weighted mean distance of a's samples to b.
+  double meanBToA = 0.0; ///< same from b to a.
+  Vec3 farthestOfA = Vec3::Zero(); ///< A sample of a at distance aToB from b.
+  Vec3 farthestOfB = Vec3::Zero(); ///< A sample of b at distance bToA from a.
+
+  /// \brief The two-sided Hausdorff distance, max(aToB, bToA).
+  double hausdorff() const { return std::max(aToB, bToA); }
+  /// \brief Whether the Hausdorff distance is reached at a sample of a
+  ///        (a part of a that b misses), rather than of b.
+  bool reachedOnA() const { return aToB >= bToA; }
+  /// \brief Where the Hausdorff distance is reached: `farthestOfA` or
+  ///        `farthestOfB` (see `reachedOnA()`).
+  Vec3 farthestPoint() const { return reachedOnA() ? farthestOfA : farthestOfB; }
+};
+
+/// \brief Distances between surfaces `a` and `b`, sampling each triangle at the
+///        points of its barycentric grid with `subdivisions` steps per edge
+///        (vertices, edge points and interior points; 1 = the vertices only).
+///
+/// Each vertex and each edge point is measured once however many triangles
+/// share it. A triangle's samples count equally towards its share of the
+/// mean, which is weighted by triangle area (plain mean over triangles if
+/// the total area is zero). `subdivisions` below 1 counts as 1. Distances to
+/// a mesh without triangles are infinite.
+SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, int subdivisions = 3);
+
+// `boundingBoxDiagonal(const TriangleMesh&)`, the usual scale for these
+// distances, is declared in TriangleMesh.h.
+
+} // namespace cmp

@@ -1,0 +1,72 @@
+#pragma once
+/// \file MeanValueSystem.h
+/// \brief Floater's mean value weights and the sparse system they define:
+///        every free vertex is the weighted mean of its neighbours. Used by
+///        the F-vector parameterization, the straightener's star maps and the
+///        per-patch parameterization.
+
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Floater's mean value weights from the 3D geometry: entry (i, j) is
+///        (tan(alpha/2) + tan(beta/2)) / |p_j - p_i| for every edge, where
+///        alpha and beta are the angles at i beside the edge. Not symmetric.
+Eigen::SparseMatrix<double> meanValueWeights(const TriangleMesh& mesh);
+
+/// \brief Solves x_v = sum_j W(v, j) x_j / sum_j W(v, j) for every vertex v
+///        with `fixedRow[v] < 0`; a vertex with `fixedRow[v] >= 0` keeps
+///        `fixedValues.row(fixedRow[v])`.
+///
+/// `values` becomes n x d (d = fixedValues.cols()). One sparse LU
+/// factorization serves all d columns. With positive weights and a convex
+/// boundary the result is a bijective embedding (Floater 1997). Vertices
+/// without neighbours must be fixed.
+Status solveConvexCombinationSystem(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values);
+
+/// \brief The system of `solveConvexCombinationSystem()`, factorized once
+///        and solved for any fixed values and right-hand sides (a multigrid
+///        solver's coarsest level is solved again in every cycle).
+class ConvexCombinationSolver
+{
+public:
+  /// \brief Factorizes sum_j W(v, j) (x_v - x_j) = b_v for every vertex v
+  ///        with `fixedRow[v] < 0`; the other vertices are known.
+  Status factorize(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow);
+
+  /// \brief `values` becomes n x d: a fixed vertex v gets
+  ///        `fixedValues.row(fixedRow[v])`, the free ones solve the system
+  ///        with b = the matching rows of `rhs` (n x d, any values on fixed
+  ///        rows), or b = 0 if `rhs` is null.
+  Status solve(const Eigen::MatrixXd& fixedValues, const Eigen::MatrixXd* rhs, Eigen::MatrixXd& values) const;
+
+private:
+  /// w_vj from free vertex v (as unknown `unknown`) to fixed vertex j (row
+  /// `fixedRow` of the fixed values), in the order the weights list them.
+  struct Coupling
+  {
+    int unknown;
+    int fixedRow;
+    double weight;
+  };
+  std::vector<int> fixedRow_;
+  std::vector<int> unknown_; ///< Unknown of each free vertex, -1 for fixed ones.
+  int unknowns_ = 0;
+  std::vector<Coupling> couplings_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+};
+
+/// \brief `solveConvexCombinationSystem()` with `meanValueWeights(mesh)`.
+Status solveMeanValueSystem(const TriangleMesh& mesh, const std::vector<int>& fixedRow,
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values);
+
+} // namespace cmp

@@ -1,0 +1,166 @@
+#pragma once
+/// \file SemiRegularRemesher.h
+/// \brief The paper's remeshing: the base domain refined by 1-to-4
+///        quadrisection, one connectivity for every model, each model's
+///        vertices placed through its parameterization.
+
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/map/PatchParameterization.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief A place in the base domain: a base triangle and barycentric
+///        coordinates in the order of its vertices.
+struct BaseLocation
+{
+  int triangle = -1;                                  ///< Base triangle.
+  std::array<double, 3> coordinates{ { 0.0, 0.0, 0.0 } }; ///< Barycentric coordinates.
+};
+
+/// \brief `at` in barycentric coordinates (c1, c2) of base triangle
+///        `triangle` (its own, or one sharing the vertices `at` lies on);
+///        false, `result` untouched, if `at` is not on that triangle.
+bool locationInBaseTriangle(const BaseDomain& domain, const BaseLocation& at, int triangle, Vec2& result);
+
+/// \brief The semi-regular connectivity shared by every model of a
+///        collection.
+///
+/// Vertex numbering: the F base vertices first, vertex f being the base
+/// vertex of feature f; then the midpoints made by each quadrisection, level
+/// by level, in the order in which their parent edges first appear when the
+/// previous level's triangles are read in order (edge k -> k+1 of each
+/// triangle). So the vertices of level l are the first ones of level l+1.
+/// Triangles: each base triangle's 4^level triangles, base triangles in order,
+/// within one in the order of recursive quadrisection (corner a, corner b,
+/// corner c, centre), counter-clockwise like the base domain.
+struct SemiRegularMesh
+{
+  int level = 0;                        ///< Quadrisections applied to L0.
+  std::vector<Triangle> triangles;      ///< Counter-clockwise triangles.
+  std::vector<int> patchOfTriangle;     ///< Base triangle of each triangle.
+  std::vector<BaseLocation> locations;  ///< Base-domain place of each vertex.
+  std::vector<int> levelOfVertex;       ///< Level at which each vertex appears (0 for base vertices).
+  /// \brief Level of each triangle: `level` everywhere for uniform
+  ///        refinement; for adaptive refinement the depth of the leaf it
+  ///        belongs to (a leaf bisected to close a T-junction gives both
+  ///        halves its own level).
+  std::vector<int> levelOfTriangle;
+
+  /// \brief Number of vertices.
+  int vertexCount() const { return static_cast<int>(locations.size()); }
+};
+
+/// \brief Builds the connectivity of `domain` refined `level` times (0..8).
+///        Depends only on the base domain and the level.
+Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out);
+
+/// \brief Decides whether a triangle of an adaptive remesh is split: gets
+///        its corners as locations in its base triangle and its level.
+using SplitRule = std::function<bool(const std::array<BaseLocation, 3>& corners, int level)>;
+
+/// \brief Builds an adaptive semi-regular connectivity: triangles are
+///        quadrisected while `needsSplit` says so, up to `maximumLevel`;
+///        then neighbours are split until levels differ by at most one
+///        across every edge, and a triangle with one finer neighbour is
+///        bisected at that edge's midpoint so that the mesh has no
+///        T-junctions (a triangle with two or more is quadrisected).
+///
+/// The result depends only on the base domain and on which triangles are
+/// split, so every model remeshed with one rule shares it. Numbering is
+/// that of `buildSemiRegularMesh()` restricted to the split triangles (with
+/// every triangle split it is identical): base vertices first, then the
+/// midpoints of level l in the order their edges first appear when the
+/// split triangles of level l - 1 are read in order; triangles in the order
+/// of recursive quadrisection, a bisected leaf giving its two halves.
+Status buildAdaptiveSemiRegularMesh(
+  const BaseDomain& domain, int maximumLevel, const SplitRule& needsSplit, SemiRegularMesh& out);
+
+/// \brief Where one remesh vertex lands on a model: a convex combination of
+///        three vertices of the parameterized surface.
+struct SurfaceSample
+{
+  std::array<int, 3> vertex{ { -1, -1, -1 } };        ///< Surface vertices.
+  std::array<double, 3> weight{ { 0.0, 0.0, 0.0 } };  ///< Their weights (sum 1).
+  int triangle = -1; ///< Surface triangle holding the sample (-1 at a landmark).
+};
+
+/// \brief One parameterized model, ready to answer where a base-domain
+///        location lies on it: a uniform grid per patch over the images
+///        of its triangles, built once.
+class ParameterizedSurface
+{
+public:
+  /// \brief Indexes `net` (the straightener's output) with its per-patch
+  ///        parameterization. `net` must outlive this object.
+  Status build(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& parameterization);
+
+  /// \brief The surface point at base location `at`: the landmark itself
+  ///        at a base vertex, otherwise the triangle of `at`'s patch whose
+  ///        image contains it, with barycentric weights.
+  Status locate(const BaseLocation& at, SurfaceSample& sample) const;
+
+  /// \brief The position of `sample` on the surface.
+  Vec3 position(const SurfaceSample& sample) const;
+
+  /// \brief Length of the diagonal of the surface's bounding box.
+  double boundingBoxDiagonal() const { return diagonal_; }
+
+  /// \brief True once `build()` succeeded.
+  bool built() const { return index_ != nullptr; }
+
+  /// \brief Calls `visit(patch, image, area)` for every surface triangle:
+  ///        its patch, its image's corners in barycentric coordinates
+  ///        (c1, c2) of that patch's base triangle, and its surface area.
+  void forEachTriangleImage(const std::function<void(int, const std::array<Vec2, 3>&, double)>& visit) const;
+
+  ParameterizedSurface();
+  ~ParameterizedSurface();
+  ParameterizedSurface(ParameterizedSurface&&) noexcept;
+  ParameterizedSurface& operator=(ParameterizedSurface&&) noexcept;
+
+private:
+  struct Index;
+  std::unique_ptr<Index> index_;
+  const TracedNet* net_ = nullptr;
+  const BaseDomain* domain_ = nullptr;
+  double diagonal_ = 0.0;
+};
+
+/// \brief The split rule for adaptive remeshing of a collection: a triangle
+///        is split when, on any of `models`, the surface point at one of
+///        its edge midpoints or at its centroid lies farther than
+///        `tolerance` times that model's bounding-box diagonal from the
+///        point the flat triangle through its corners' surface points puts
+///        there. Models must outlive the rule.
+SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& models, double tolerance);
+
+/// \brief Places every vertex of `remesh` on a parameterized model by
+///        inverting its parameterization: the triangle of the vertex's patch
+///        whose image contains the vertex's base location (a uniform grid
+///        per patch, not a scan), interpolated barycentrically. `net` and
+///        `parameterization` are the straightener's and the per-patch
+///        map's output for the same surface.
+Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const BaseDomain& domain,
+  const PatchParameterization& parameterization, std::vector<SurfaceSample>& samples);
+
+/// \brief Places every vertex of `remesh` on a model already indexed.
+Status placeOnSurface(
+  const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfaceSample>& samples);
+
+/// \brief The position of `sample` on `mesh`: its weights on its (up to
+///        three) vertices.
+Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample);
+
+/// \brief The positions of `samples` on the mesh of `net`.
+std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfaceSample>& samples);
+
+} // namespace cmp
