@@ -3,7 +3,8 @@
 A picture is a sheet of panels (one surface each, optionally labelled) that
 share one view direction and one scale, so that shapes side by side compare
 at a glance: the mean, the modes at plus and minus two standard deviations,
-a grid of blends, a transferred texture.
+a grid of blends, a transferred texture. `run_pictures` makes those of the
+stages a consistent-remesh run went through, each on its own.
 
 ParaView's VTK on Debian draws through GLX: making a render window without a
 reachable X server with GLX aborts the whole process, so `unavailable_reason`
@@ -14,11 +15,12 @@ import colorsys
 import ctypes
 import ctypes.util
 import os
+import time
 
 import numpy
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkLookupTable, vtkPoints, vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkImageData, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkIOImage import vtkImageReader2Factory, vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (
@@ -35,6 +37,10 @@ from vtkmodules.vtkRenderingCore import (
 import vtkmodules.vtkRenderingFreeType  # noqa: F401 (the text actors' font backend)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the render window's implementation)
 
+from .figures import field_reader, landmark_points
+from .summary import weights_text
+from .vtkio import StageError, read_polydata
+
 BACKGROUND = (1.0, 1.0, 1.0)
 CLAY = (0.86, 0.80, 0.71)
 TEXT = (0.1, 0.1, 0.1)
@@ -45,6 +51,8 @@ CURVE_COLOUR = (0.12, 0.12, 0.14)
 TEXTURE_SIZE = 1024
 TITLE_HEIGHT = 36  # pixels above the panels when a sheet has a title
 AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
+# Rows of pca-modes.png: more would make the picture too large to read.
+RENDERED_MODES = 3
 
 
 class RenderError(Exception):
@@ -535,3 +543,166 @@ def picture_patches(entries, title, view, path, columns=3):
     for index, (surface, curves, label) in enumerate(entries):
         sheet.add(index % columns, index // columns, patch_panel(surface, label, curves=curves))
     sheet.write(path, view)
+
+
+class Pictures:
+    """The PNGs of the run, each made on its own so that one failure does
+    not stop the others."""
+
+    def __init__(self, output_folder, up):
+        self.output_folder = output_folder
+        self.up = up
+        self.files = []
+        self.notes = []
+        self.errors = {}
+
+    def make(self, name, function, *args):
+        path = os.path.join(self.output_folder, name)
+        try:
+            function(*args, path)
+            self.files.append(name)
+        except (RenderError, StageError) as error:
+            self.errors[name] = str(error)
+
+    def view(self, surface):
+        return View(surface, self.up)
+
+
+def make_pictures(pictures, stages, models):
+    """Draws what the stages in `stages` (name -> what its picture needs)
+    produced."""
+    overview = stages.get("overview")
+    if overview is not None:
+        make_overview_pictures(pictures, *overview)
+    pca = stages.get("pca")
+    if pca is not None:
+        mean, figures = pca
+        view = pictures.view(mean)
+        pictures.make("mean.png", picture_mean, mean, len(figures["models"]), view)
+        shown = min(figures["modes"], RENDERED_MODES)
+        if shown:
+            pictures.make("pca-modes.png", picture_modes, mean, figures["standard_deviations"][:shown],
+                          figures["explained_variance_ratios"][:shown], view)
+        else:
+            pictures.notes.append("pca-modes.png: the collection has no mode of variation to show")
+    grid = stages.get("blend_grid")
+    if grid is not None:
+        (entries, (columns, rows)), names = grid
+        if len(names) == 3:
+            title = "Blends of %s (top), %s (bottom left), %s (bottom right)" % tuple(names)
+        else:
+            title = "Blends from %s (left) to %s (right)" % tuple(names)
+        pictures.make("blend-grid.png", picture_blend_grid, entries, columns, rows, title,
+                      pictures.view([surface for _, _, surface, _ in entries]))
+    blend = stages.get("blend")
+    if blend is not None:
+        surface, weights = blend
+        pictures.make("blend.png", picture_single, surface, "Blend with weights %s" % weights_text(weights),
+                      pictures.view(surface), None, None)
+    transfer = stages.get("transfer")
+    if transfer is not None:
+        figures, remeshes = transfer
+        make_transfer_pictures(pictures, figures, next(m for m in models if m.name == figures["source"]), remeshes)
+
+
+def make_overview_pictures(pictures, ready, remeshes):
+    """inputs.png: every parameterized model with its straightened net,
+    coloured by patch; remeshes.png: every remesh coloured by the base
+    triangle it samples. A patch has the same colour on every model, and
+    each model is scaled to one size and turned as the first one stands
+    (by its remesh, or its landmarks if the remeshing failed)."""
+    first = ready[0]
+    remesh = _block_by_name(remeshes) if remeshes is not None else {}
+
+    def correspondence(model):
+        if model.name in remesh:
+            return points_of(remesh[model.name])
+        return points_of(model.parameterized)[landmark_points(model.parameterized)]
+
+    reference = correspondence(first)
+    places = {m.name: similarity_to(correspondence(m), reference) for m in ready}
+    inputs = [(places[m.name](m.parameterized), places[m.name](m.curves), m.name) for m in ready]
+    view = pictures.view([surface for surface, _, _ in inputs])
+    pictures.make("inputs.png", picture_patches, inputs,
+                  "The models and their patch layouts (a patch has one colour on every model)", view)
+    if remesh:
+        level = int(field_reader(remesh[first.name])("RemeshLevel"))
+        remeshed = [(places[m.name](remesh[m.name]), None, m.name) for m in ready]
+        pictures.make("remeshes.png", picture_patches, remeshed,
+                      "Remeshes of level %d: one connectivity, coloured by base triangle" % level, view)
+
+
+def _block_by_name(blocks):
+    return {blocks.GetMetaData(i).Get(vtkCompositeDataSet.NAME()): blocks.GetBlock(i)
+            for i in range(blocks.GetNumberOfBlocks())}
+
+
+def make_transfer_pictures(pictures, figures, source, remeshes):
+    """TARGET.from-SOURCE.png per target: the source's texture image on the
+    target when there is one; else a checkerboard on the transferred
+    texture coordinates, or the first transferred point array in colour.
+    Each target is turned as the source stands (collections come in every
+    orientation), by the rigid motion that best carries its remesh vertices
+    onto the source's, so all are seen from the same side."""
+    remesh = _block_by_name(remeshes)
+    source_points = points_of(remesh[source.name])
+    view = pictures.view(remesh[source.name])
+    image = find_texture_image(source.mesh_path)
+    texture = None
+    if image is not None:
+        try:
+            texture = read_texture(image)
+        except RenderError as error:
+            pictures.notes.append("%s; the transfers are drawn without it" % error)
+    checker = None
+    for target in figures["targets"]:
+        name = "%s.from-%s" % (target, source.name)
+        try:
+            surface = read_polydata(os.path.join(pictures.output_folder, name + ".vtp"))
+        except StageError as error:
+            pictures.errors[name + ".png"] = str(error)
+            continue
+        surface = moved(surface, *rigid_motion(points_of(remesh[target]), source_points))
+        title = "%s's %%s on %s" % (source.name, target)
+        if surface.GetPointData().GetTCoords() is not None:
+            if texture is None:
+                if checker is None:
+                    if "texture_coordinates" in figures:
+                        note = ("%s has no texture: the cylindrical texture coordinates it got are drawn with a "
+                                "checkerboard" % source.name)
+                    else:
+                        note = ("no texture image beside %s (%s_texture.png or map_Kd of its .mtl): its texture "
+                                "coordinates are drawn with a checkerboard" % (source.mesh_path, source.name))
+                    pictures.notes.append(note)
+                    checker = checkerboard_texture()
+                pictures.make(name + ".png", picture_single, surface, title % "texture coordinates",
+                              view, checker, None)
+            else:
+                pictures.make(name + ".png", picture_single, surface, title % "texture",
+                              view, texture, None)
+            continue
+        array = colour_array(surface)
+        if array is None:
+            pictures.notes.append("%s.png: %s has neither texture coordinates nor a point array to colour by"
+                                  % (name, source.name))
+            continue
+        pictures.make(name + ".png", picture_single, surface, title % array, view, None, array)
+
+
+def run_pictures(args, stages, models):
+    """The pictures of the stages that ran: the report's "renders"."""
+    if args.no_render:
+        return {"skipped": "--no-render"}
+    reason = unavailable_reason()
+    if reason is not None:
+        return {"skipped": reason}
+    print("rendering", flush=True)
+    pictures = Pictures(args.output, args.view_up)
+    start = time.perf_counter()
+    make_pictures(pictures, stages, models)
+    figures = {"files": pictures.files, "seconds": round(time.perf_counter() - start, 4)}
+    if pictures.notes:
+        figures["notes"] = pictures.notes
+    if pictures.errors:
+        figures["errors"] = pictures.errors
+    return figures

@@ -1,18 +1,20 @@
-"""report.md and report.html: what a consistent-remesh run did, for people.
+"""The report of a consistent-remesh run: report.json, the run's figures,
+and report.md and report.html, what it did, for people.
 
-Both are made from one list of blocks (headings, paragraphs, tables,
+The last two are made from one list of blocks (headings, paragraphs, tables,
 pictures) built from the run's report.json content, so they say the same.
 The pictures are the PNGs beside them, linked by file name, so the folder
 can be moved or shared as a whole.
 """
 
 import html
+import json
 import os
 import shlex
 import time
 from urllib.parse import quote
 
-FILES = ("report.md", "report.html")
+FILES = ("report.json", "report.md", "report.html")
 
 
 class Heading:
@@ -38,11 +40,13 @@ class Picture:
 
 
 def write(report, output_folder):
-    """Writes report.md and report.html into `output_folder`."""
-    blocks = build(report)
+    """Writes report.json, report.md and report.html into `output_folder`."""
     with open(os.path.join(output_folder, FILES[0]), "w") as out:
-        out.write(markdown(blocks))
+        json.dump(report, out, indent=2)
+    blocks = build(report)
     with open(os.path.join(output_folder, FILES[1]), "w") as out:
+        out.write(markdown(blocks))
+    with open(os.path.join(output_folder, FILES[2]), "w") as out:
         out.write(html_page(blocks, _title(report)))
 
 

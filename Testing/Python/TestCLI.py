@@ -17,6 +17,7 @@ unset and checks that the pictures are skipped and said to be.
 
 import argparse
 import csv
+import importlib
 import json
 import math
 import os
@@ -799,7 +800,7 @@ def check_texture_fallbacks(tmp):
     """Where a source's texture image is looked for (STEM_texture.png, else
     the map_Kd of the OBJ's materials), and what a transfer picture shows
     without one: the texture coordinates as a checkerboard."""
-    render = cli_module().render
+    render = package_module("render")
     spot, landmarks = spot_paths()
     check_equal(render.find_texture_image(spot), os.path.join(DATA, "spot", "spot_texture.png"), "Spot's texture")
     folder = os.path.join(tmp, "textures")
@@ -1061,17 +1062,15 @@ def check_stages_without_a_model(tmp, good, garbage):
     check_pictures_skipped(out, report, stdout, "--no-render")
 
 
-def cli_module():
-    """consistent_mesh.cli, imported from where the command finds it (the
+def package_module(name):
+    """consistent_mesh.NAME, imported from where the command finds it (the
     sys.path line of the generated script)."""
     with open(COMMAND) as f:
         paths = re.findall(r'sys\.path\.insert\(0, "([^"]+)"\)', f.read())
     check(len(paths) == 1, "cannot find the package path in " + COMMAND)
     if paths[0] not in sys.path:
         sys.path.insert(0, paths[0])
-    from consistent_mesh import cli
-
-    return cli
+    return importlib.import_module("consistent_mesh." + name)
 
 
 def check_remesh_failure(tmp, pairs):
@@ -1079,7 +1078,7 @@ def check_remesh_failure(tmp, pairs):
     the remesher's message. A straightened surface that lost its
     BaseTriangle array stands in for a remesher failure; the command runs
     in this process so that the stage before can be changed."""
-    cli = cli_module()
+    cli = package_module("cli")
     straighten_net = cli.straighten_net
 
     def lose_base_triangle(model, *args):
@@ -1088,6 +1087,7 @@ def check_remesh_failure(tmp, pairs):
             model.parameterized.GetPointData().RemoveArray("BaseTriangle")
 
     out = os.path.join(tmp, "out-remesh-failure")
+    # Replaced where main looks it up: cli imports it from stages.
     cli.straighten_net = lose_base_triangle
     try:
         status = cli.main(model_arguments(pairs) + ["--level", "1", "--pca", "1", "--output", out])
@@ -1351,7 +1351,7 @@ def case_default_collection(tmp):
         for name in names:
             archive.add(octahedron, "data/meshes/%s.off" % name)
     truncated = os.path.join(tmp, "truncated.tar.gz")
-    collection = cli_module().collection
+    collection = package_module("collection")
     package_archive = collection.Collection(collection.default_folder()).find_archive()
     with open(package_archive, "rb") as source, open(truncated, "wb") as out:
         out.write(source.read(1 << 20))

@@ -1,0 +1,509 @@
+"""The stages of consistent-remesh on its VTK filters: per model read,
+landmarks, check, base domain, trace and straighten; then the remeshing of
+the whole collection, and on its remeshes the transfer of attributes or
+details, principal components and blends. Each writes its outputs into the
+output folder and gives the figures of the report; a stage that fails
+raises StageError."""
+
+import os
+import time
+
+from vtkmodules.vtkCommonCore import vtkIntArray
+from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
+from vtkmodules.vtkFiltersTexture import vtkTextureMapToCylinder
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+from . import CMPFilters as cmp
+from .figures import field_reader, folds_near_landmark, landmark_count, significant, table_column
+from .summary import weights_text
+from .vtkio import StageError, run, write_multiblock, write_polydata, write_table
+
+
+BLEND_GRID_STEPS = 4
+PCA_ALIGNMENT = "rigid, equal volume"  # vtkCMPMeshPCA's default, the paper's choice
+# --blend-alignment: vtkCMPShapeBlend's Alignment values and their names in
+# the report. Rigid, the default, blends sizes too; equal volume suits
+# collections of very different sizes (a 15-unit triceratops, a 1-unit camel).
+BLEND_ALIGNMENTS = {"none": (0, "none"), "rigid": (1, "rigid"), "equal-volume": (2, "rigid, equal volume"),
+                    "unit-size": (3, "rigid, unit centroid size")}
+
+
+class Model:
+    """One input surface, its landmark file, and what happened to it."""
+
+    def __init__(self, mesh_path, landmark_path):
+        self.mesh_path = mesh_path
+        self.landmark_path = landmark_path
+        self.name = os.path.splitext(os.path.basename(mesh_path))[0]
+        self.surface = None
+        self.parameterized = None  # NetStraightener's surface, the remesher's input
+        self.curves = None  # the last net filter's curves
+        self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
+
+    def without_own_name(self, message):
+        """`message` without the "NAME.off: " the filters put before their
+        messages about a surface read from a file: wherever the tool shows a
+        model's error, the model's name is already beside it."""
+        prefix = os.path.basename(self.mesh_path) + ": "
+        return message[len(prefix):] if message.startswith(prefix) else message
+
+    def timed(self, stage, function, *args):
+        start = time.perf_counter()
+        try:
+            return function(*args)
+        finally:
+            self.report["seconds"][stage] = round(time.perf_counter() - start, 4)
+
+    def fail(self, error):
+        self.report["status"] = "failed"
+        self.report["error"] = self.without_own_name(str(error))
+        self.surface = None
+        self.parameterized = None
+
+
+def read_landmarked_surface(model):
+    reader = cmp.vtkCMPSurfaceReader()
+    reader.SetFileName(model.mesh_path)
+    surface = model.timed("read", run, reader)
+    model.report["vertices"] = surface.GetNumberOfPoints()
+    model.report["triangles"] = surface.GetNumberOfCells()
+    landmarks = cmp.vtkCMPLandmarksFromFile()
+    landmarks.SetInputData(surface)
+    landmarks.SetLandmarkFile(model.landmark_path)
+    surface = model.timed("landmarks", run, landmarks)
+    check = cmp.vtkCMPInputCheck()
+    check.SetInputData(surface)
+    check.RequireLandmarksOn()
+    model.surface = model.timed("check", run, check)
+    model.report["landmark_count"] = landmark_count(model.surface)
+
+
+def load_base_domain(path):
+    """A .vtp base domain carries FeatureId; in any other surface format
+    vertex i stands for landmark i."""
+    if path.lower().endswith(".vtp"):
+        reader = vtkXMLPolyDataReader()
+    else:
+        reader = cmp.vtkCMPSurfaceReader()
+    reader.SetFileName(path)
+    domain = run(reader)
+    if domain.GetNumberOfPoints() == 0:
+        raise StageError("cannot read a base domain from '%s'" % path)
+    if domain.GetPointData().GetArray("FeatureId") is None:
+        ids = vtkIntArray()
+        ids.SetName("FeatureId")
+        for i in range(domain.GetNumberOfPoints()):
+            ids.InsertNextValue(i)
+        domain.GetPointData().AddArray(ids)
+    return domain
+
+
+def build_base_domain(model):
+    builder = cmp.vtkCMPBaseDomainBuilder()
+    builder.SetInputData(model.surface)
+    return model.timed("base_domain", run, builder)
+
+
+def check_against_base_domain(model, domain):
+    check = cmp.vtkCMPInputCheck()
+    check.SetInputData(0, model.surface)
+    check.SetInputData(1, domain)
+    model.timed("base_domain_check", run, check)
+
+
+def _run_net_filter(model, stage, algorithm, surface, domain, output_folder, surface_suffix, curves_suffix):
+    """Runs a (surface, L0) -> (surface, curves) filter as `stage`, writes
+    both outputs as NAME.<suffix>.vtp and returns the output surface and a
+    reader of its field values."""
+    algorithm.SetInputData(0, surface)
+    algorithm.SetInputData(1, domain)
+    result = model.timed(stage, run, algorithm)
+    write_polydata(result, os.path.join(output_folder, model.name + surface_suffix))
+    model.curves = algorithm.GetOutputDataObject(1)
+    write_polydata(model.curves, os.path.join(output_folder, model.name + curves_suffix))
+    return result, field_reader(result)
+
+
+def trace_net(model, domain, output_folder):
+    """FeatureNetTracer: writes NAME.net.vtp (the refined surface with
+    PatchId) and NAME.curves.vtp (one polyline per base-domain edge)."""
+    surface, value = _run_net_filter(model, "trace", cmp.vtkCMPFeatureNetTracer(), model.surface, domain,
+                                     output_folder, ".net.vtp", ".curves.vtp")
+    model.report["net"] = {
+        "length": round(value("NetLength"), 6),
+        "length_per_sqrt_area": round(value("NetLengthPerSqrtArea"), 4),
+        "valid": bool(value("NetValid")),
+        "retraced_curves": int(value("RetracedCurves")),
+        "penalised_curves": int(value("PenalisedCurves")),
+        "split_edges": int(value("SplitEdges")),
+        "vertices": surface.GetNumberOfPoints(),
+    }
+    if not model.report["net"]["valid"]:
+        raise StageError("the traced net failed the layout check")
+    return surface
+
+
+def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
+    """NetStraightener on the tracer's surface: writes NAME.param.vtp (the
+    re-triangulated surface with PatchId, BaseTriangle and BaseCoordinates)
+    and NAME.straight-curves.vtp (the straightened curves). With
+    lower_stretch, every patch's map is made less stretched (the filter's
+    LowerStretch)."""
+    straightener = cmp.vtkCMPNetStraightener()
+    straightener.SetLowerStretch(lower_stretch)
+    surface, value = _run_net_filter(model, "straighten", straightener, traced, domain,
+                                     output_folder, ".param.vtp", ".straight-curves.vtp")
+    model.report["straighten"] = {
+        "net_length_before": round(value("NetLengthBefore"), 6),
+        "net_length_after": round(value("NetLengthAfter"), 6),
+        "net_length_per_sqrt_area_after": round(value("NetLengthPerSqrtAreaAfter"), 4),
+        "area_variation_before": round(value("AreaVariationBefore"), 6),
+        "area_variation_after": round(value("AreaVariationAfter"), 6),
+        "sweeps": int(value("Sweeps")),
+        "skipped_stars": int(value("SkippedStars")),
+        # Not a failure: the parameterization is still written, and the
+        # count says where it is not bijective.
+        "flipped_triangles": int(value("FlippedTriangles")),
+        "smallest_area_ratio": significant(value("SmallestAreaRatio"), 4),
+        # Above about 250 degrees the curves leave that landmark bunched and
+        # the remesh often keeps folds there.
+        "widest_curve_gap_degrees": round(value("WidestCurveGap"), 1),
+        "widest_curve_gap_landmark": int(value("WidestCurveGapFeature")),
+        "net_valid": bool(value("NetValid")),
+        "vertices": surface.GetNumberOfPoints(),
+        "lower_stretch": bool(lower_stretch),
+    }
+    if not model.report["straighten"]["net_valid"]:
+        raise StageError("the straightened net failed the layout check")
+    model.parameterized = surface
+
+
+def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, repair_folds=True,
+                      sample_relaxation=0):
+    """SemiRegularRemesher on every straightened model at once (a multiblock
+    with one block per model, named after it), so that they all get the same
+    connectivity and base locations, adaptive refinement and sample
+    relaxation included; repair_folds is the filter's RepairFolds and
+    sample_relaxation its SampleRelaxationIterations. Writes NAME.remesh.vtp per
+    model, collection.vtm (all of them) and remesh_connectivity.vtp (the
+    connectivity on L0); fills each model's "remesh" figures and returns the
+    collection's (size, time). Raises StageError if the filter fails or a
+    file cannot be written."""
+    blocks = vtkMultiBlockDataSet()
+    for index, model in enumerate(models):
+        blocks.SetBlock(index, model.parameterized)
+        blocks.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), model.name)
+    remesher = cmp.vtkCMPSemiRegularRemesher()
+    remesher.SetInputData(0, blocks)
+    remesher.SetInputData(1, domain)
+    remesher.SetLevel(level)
+    remesher.SetAdaptiveTolerance(adaptive_tolerance)
+    remesher.ComputeDistanceOn()
+    remesher.SetRepairFolds(repair_folds)
+    remesher.SetSampleRelaxationIterations(sample_relaxation)
+    start = time.perf_counter()
+    remeshes = run(remesher)
+    seconds = time.perf_counter() - start
+
+    figures = []
+    for index, model in enumerate(models):
+        remesh = remeshes.GetBlock(index)
+        name = remeshes.GetMetaData(index).Get(vtkCompositeDataSet.NAME()) if remeshes.HasMetaData(index) else None
+        if remesh is None or name != model.name:
+            raise StageError("the remesher's block %d is not model %s" % (index, model.name))
+        value = field_reader(remesh)
+        figures.append({
+            "level": int(value("RemeshLevel")),
+            "vertices": int(value("VertexCount")),
+            "triangles": int(value("TriangleCount")),
+            "hausdorff_distance": significant(value("HausdorffDistance")),
+            "hausdorff_per_diagonal": significant(value("HausdorffDistanceRelative")),
+            "mean_distance": significant(value("MeanDistance")),
+            # Where the Hausdorff distance is reached: on the input, a part
+            # the remesh misses (a tail without a landmark at its tip).
+            "hausdorff_point": [significant(x) for x in remesh.GetFieldData().GetArray("HausdorffPoint").GetTuple3(0)],
+            "hausdorff_point_on": "input" if value("HausdorffPointOnInput") == 1 else "remesh",
+            "hausdorff_nearest_landmark": int(value("HausdorffNearestFeature")),
+            "hausdorff_landmark_distance_per_diagonal": significant(value("HausdorffFeatureDistanceRelative")),
+            # Reported, not a failure, as for the straightener.
+            "flipped_triangles": int(value("FlippedTriangles")),
+            "folds_near_landmark": folds_near_landmark(remesh),
+            "folded_before_repair": int(value("FoldedBeforeRepair")),
+            "repaired_vertices": int(value("RepairedVertices")),
+            "min_angle_degrees": round(value("MinimumAngle"), 4),
+            "mean_shape_quality": round(value("MeanShapeQuality"), 4),
+            "seconds": round(value("TotalSeconds"), 4),
+        })
+        write_polydata(remesh, os.path.join(output_folder, model.name + ".remesh.vtp"))
+    write_multiblock(remeshes, os.path.join(output_folder, "collection.vtm"))
+    connectivity = remesher.GetOutputDataObject(1)
+    write_polydata(connectivity, os.path.join(output_folder, "remesh_connectivity.vtp"))
+    # Only a complete stage gives figures.
+    for model, model_figures in zip(models, figures):
+        model.report["remesh"] = model_figures
+        model.report["seconds"]["remesh"] = model_figures["seconds"]
+    shared = field_reader(connectivity)
+    return remeshes, {
+        "vertices": connectivity.GetNumberOfPoints(),
+        "triangles": connectivity.GetNumberOfCells(),
+        "sample_relaxation_rounds": int(shared("SampleRelaxationRounds")),
+        "sample_relaxation_seconds": round(shared("SampleRelaxationSeconds"), 4),
+        "fold_repair": bool(repair_folds),
+        "seconds": round(seconds, 4),
+    }
+
+
+def transfer_attributes(source, remeshes, domain, output_folder):
+    """AttributeTransfer from `source`'s parameterized surface (its point
+    arrays and texture coordinates) onto every remesh of the collection,
+    texture seams split so the result renders: writes
+    TARGET.from-SOURCE.vtp per other model and returns the stage's figures.
+    Raises StageError if the filter fails or a file cannot be written."""
+    start = time.perf_counter()
+    surface, generated = with_texture_coordinates(source.parameterized)
+    transfer = cmp.vtkCMPAttributeTransfer()
+    transfer.SetInputData(0, remeshes)
+    transfer.SetInputData(1, surface)
+    transfer.SetInputData(2, domain)
+    transfer.SplitTextureSeamsOn()
+    results = run(transfer)
+    figures = {"source": source.name, "targets": {}}
+    if generated:
+        figures["texture_coordinates"] = "generated: %s has none, so it got cylindrical ones" % source.name
+    for index in range(results.GetNumberOfBlocks()):
+        name = results.GetMetaData(index).Get(vtkCompositeDataSet.NAME())
+        if name == source.name:
+            continue
+        result = results.GetBlock(index)
+        value = field_reader(result)
+        write_polydata(result, os.path.join(output_folder, "%s.from-%s.vtp" % (name, source.name)))
+        figures["targets"][name] = {
+            "arrays": int(value("TransferredArrays")),
+            "seam_points_added": int(value("SeamPointsAdded")),
+            "textured": result.GetPointData().GetTCoords() is not None,
+        }
+    figures["seconds"] = round(time.perf_counter() - start, 4)
+    return figures
+
+
+def with_texture_coordinates(surface):
+    """(surface, False) if it has texture coordinates (per point or per
+    triangle corner), else (a copy with
+    cylindrical ones about its longest axis, True): a model without a
+    texture (the CGAL quadrupeds have none) still shows where its surface
+    lands on the others, as a checkerboard in the pictures."""
+    # The reader keeps texture coordinates with seams per triangle corner.
+    if surface.GetPointData().GetTCoords() is not None or surface.GetCellData().GetArray("CornerTCoords"):
+        return surface, False
+    cylinder = vtkTextureMapToCylinder()
+    cylinder.SetInputData(surface)
+    cylinder.AutomaticCylinderGenerationOn()
+    # Mirrored instead of wrapping from 1 back to 0, which would smear the
+    # whole texture across one column of triangles.
+    cylinder.PreventSeamOn()
+    textured = vtkPolyData()
+    textured.ShallowCopy(run(cylinder))
+    return textured, True
+
+
+def run_transfer(source_name, ready, remeshes, domain, output_folder):
+    """The --transfer-from stage, reported but never fatal to the models."""
+    source = next((m for m in ready if m.name == source_name), None)
+    if remeshes is None or source is None or source.parameterized is None:
+        return {"source": source_name, "error": "model %s was not remeshed with the collection" % source_name}
+    print("transferring %s's attributes onto the other remeshes" % source_name, flush=True)
+    try:
+        return transfer_attributes(source, remeshes, domain, output_folder)
+    except StageError as error:
+        return {"source": source_name, "error": str(error)}
+
+
+def transfer_details(source_name, remeshes, output_folder):
+    """WaveletDetailTransfer with every other remesh's coarse shape and
+    `source_name`'s details (above level 2, the filter's default): writes
+    TARGET.details-from-SOURCE.vtp and returns the stage's figures. Raises
+    StageError if the filter fails or a file cannot be written."""
+    names = [remeshes.GetMetaData(i).Get(vtkCompositeDataSet.NAME()) for i in range(remeshes.GetNumberOfBlocks())]
+    transfer = cmp.vtkCMPWaveletDetailTransfer()
+    transfer.SetInputData(remeshes)
+    transfer.SetDetailModel(names.index(source_name))
+    figures = {"source": source_name, "last_coarse_level": transfer.GetLastCoarseLevel(), "targets": {}}
+    start = time.perf_counter()
+    for index, name in enumerate(names):
+        if name == source_name:
+            continue
+        transfer.SetCoarseModel(index)
+        result = run(transfer)
+        path = os.path.join(output_folder, "%s.details-from-%s.vtp" % (name, source_name))
+        write_polydata(result, path)
+        figures["targets"][name] = {"file": os.path.basename(path),
+                                    "seconds": round(field_reader(result)("TransferSeconds"), 4)}
+    figures["seconds"] = round(time.perf_counter() - start, 4)
+    return figures
+
+
+def run_details(source_name, ready, remeshes, output_folder):
+    """The --details-from stage, reported but never fatal to the models."""
+    if remeshes is None or source_name not in [m.name for m in ready]:
+        return {"source": source_name, "error": "model %s was not remeshed with the collection" % source_name}
+    print("putting %s's details on the other remeshes" % source_name, flush=True)
+    try:
+        return transfer_details(source_name, remeshes, output_folder)
+    except StageError as error:
+        return {"source": source_name, "error": str(error)}
+
+
+def principal_components(remeshes, modes, output_folder):
+    """MeshPCA on the collection of remeshes: writes mean.vtp (the mean
+    with point arrays Mode0.. of one standard deviation each),
+    pca-coefficients.csv (one row per model), pca-variances.csv (one row per
+    mode) and pca-aligned.vtm (the models aligned as the analysis saw them);
+    returns the stage's figures and the mean. Raises StageError if the
+    filter fails or a file cannot be written."""
+    pca = cmp.vtkCMPMeshPCA()
+    pca.SetInputData(remeshes)
+    pca.SetNumberOfModes(modes)
+    start = time.perf_counter()
+    mean = run(pca)
+    seconds = time.perf_counter() - start
+    coefficients = pca.GetOutputDataObject(1)
+    variances = pca.GetOutputDataObject(2)
+    write_polydata(mean, os.path.join(output_folder, "mean.vtp"))
+    write_table(coefficients, os.path.join(output_folder, "pca-coefficients.csv"))
+    write_table(variances, os.path.join(output_folder, "pca-variances.csv"))
+    write_multiblock(pca.GetOutputDataObject(4), os.path.join(output_folder, "pca-aligned.vtm"))
+    value = field_reader(mean)
+    ratios = table_column(variances, "ExplainedVarianceRatio")
+    figures = {
+        "requested_modes": modes,
+        "modes": int(value("ModeCount")),
+        "models": table_column(coefficients, "Model"),
+        "alignment": PCA_ALIGNMENT,
+        "alignment_iterations": int(value("AlignmentIterations")),
+        "alignment_converged": bool(value("AlignmentConverged")),
+        "total_variance": significant(value("TotalVariance")),
+        "variances": [significant(v) for v in table_column(variances, "Variance")],
+        "standard_deviations": [significant(v) for v in table_column(variances, "StandardDeviation")],
+        "explained_variance_ratios": [round(r, 6) for r in ratios],
+        "explained_variance": round(sum(ratios), 6),
+        "files": ["mean.vtp", "pca-coefficients.csv", "pca-variances.csv", "pca-aligned.vtm"],
+        "seconds": round(seconds, 4),
+    }
+    return figures, mean
+
+
+def run_pca(modes, ready, remeshes, output_folder):
+    """The --pca stage, reported but never fatal to the models: (figures,
+    mean or None)."""
+    remeshed = 0 if remeshes is None else len(ready)
+    if remeshed < 2:
+        return {"requested_modes": modes,
+                "error": "principal components need at least two remeshed models, not %d" % remeshed}, None
+    print("principal components of %d models" % len(ready), flush=True)
+    try:
+        return principal_components(remeshes, modes, output_folder)
+    except StageError as error:
+        return {"requested_modes": modes, "error": str(error)}, None
+
+
+def _sub_collection(remeshes, indices):
+    """The blocks `indices` of `remeshes`, names kept."""
+    blocks = vtkMultiBlockDataSet()
+    for position, index in enumerate(indices):
+        blocks.SetBlock(position, remeshes.GetBlock(index))
+        blocks.GetMetaData(position).Set(vtkCompositeDataSet.NAME(),
+                                         remeshes.GetMetaData(index).Get(vtkCompositeDataSet.NAME()))
+    return blocks
+
+
+def _blend(blocks, weights, alignment):
+    """ShapeBlend of `blocks` with `weights` after `alignment` (a key of
+    BLEND_ALIGNMENTS): (surface, extrapolating)."""
+    blend = cmp.vtkCMPShapeBlend()
+    blend.SetInputData(blocks)
+    blend.SetAlignment(BLEND_ALIGNMENTS[alignment][0])
+    blend.SetWeights([float(w) for w in weights])
+    surface = vtkPolyData()
+    surface.ShallowCopy(run(blend))
+    return surface, bool(field_reader(surface)("Extrapolating"))
+
+
+def blend_grid_layout(count):
+    """[(weights, column, row)] and the grid's (columns, rows): for three
+    models the paper's triangle of blends (Figure 14), model 0 at the top,
+    1 bottom left, 2 bottom right, in steps of 1/BLEND_GRID_STEPS; for two,
+    one row from model 0 to model 1."""
+    n = BLEND_GRID_STEPS
+    if count == 2:
+        return [((1 - c / n, c / n), c, 0) for c in range(n + 1)], (n + 1, 1)
+    layout = []
+    for row in range(n + 1):
+        for c in range(row + 1):
+            layout.append(((1 - row / n, (row - c) / n, c / n), (n - row) / 2 + c, row))
+    return layout, (n + 1, n + 1)
+
+
+def blend_grid(ready, remeshes, output_folder, alignment):
+    """Blends of the first three remeshed models (two if there are only
+    two) on a grid of weights: writes blend-grid.vtm, one block per blend
+    named by its weights; returns the figures and the blends for the
+    picture. Raises StageError if a blend fails or the file cannot be
+    written."""
+    names = [m.name for m in ready[:3]]
+    blocks = _sub_collection(remeshes, range(len(names)))
+    layout, grid = blend_grid_layout(len(names))
+    start = time.perf_counter()
+    results = vtkMultiBlockDataSet()
+    entries = []
+    for index, (weights, column, row) in enumerate(layout):
+        surface, _ = _blend(blocks, weights, alignment)
+        label = " + ".join("%g %s" % (w, name) for w, name in zip(weights, names) if w)
+        results.SetBlock(index, surface)
+        results.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), label)
+        # A corner is one model: its name says more than its weights.
+        corner = [name for w, name in zip(weights, names) if w == 1]
+        entries.append((column, row, surface, corner[0] if corner else weights_text(weights)))
+    write_multiblock(results, os.path.join(output_folder, "blend-grid.vtm"))
+    figures = {
+        "models": names,
+        "alignment": BLEND_ALIGNMENTS[alignment][1],
+        "blends": len(layout),
+        "weights": [list(weights) for weights, _, _ in layout],
+        "file": "blend-grid.vtm",
+        "seconds": round(time.perf_counter() - start, 4),
+    }
+    return figures, (entries, grid)
+
+
+def run_blend_grid(ready, remeshes, output_folder, alignment):
+    """The --blend stage, reported but never fatal to the models: (figures,
+    what the picture needs or None)."""
+    remeshed = 0 if remeshes is None else len(ready)
+    if remeshed < 2:
+        return {"models": [m.name for m in ready[:3]] if remeshes is not None else [],
+                "error": "a blend needs at least two remeshed models, not %d" % remeshed}, None
+    print("blending %s" % ", ".join(m.name for m in ready[:3]), flush=True)
+    try:
+        return blend_grid(ready, remeshes, output_folder, alignment)
+    except StageError as error:
+        return {"models": [m.name for m in ready[:3]], "error": str(error)}, None
+
+
+def run_blend(weights, models, ready, remeshes, output_folder, alignment):
+    """The --blend-weights stage: one blend of every model with the given
+    weights, written to blend.vtp; (figures, blend or None)."""
+    named = {m.name: w for m, w in zip(models, weights)}
+    missing = [m.name for m in models if m not in ready]
+    if remeshes is None or missing:
+        failed = missing or [m.name for m in models]
+        return {"weights": named, "error": "the weights are for every model, and %s %s not remeshed"
+                % (", ".join(failed), "was" if len(failed) == 1 else "were")}, None
+    print("blending every model with weights %s" % weights_text(weights), flush=True)
+    start = time.perf_counter()
+    try:
+        surface, extrapolating = _blend(remeshes, weights, alignment)
+        write_polydata(surface, os.path.join(output_folder, "blend.vtp"))
+    except StageError as error:
+        return {"weights": named, "error": str(error)}, None
+    return {"weights": named, "alignment": BLEND_ALIGNMENTS[alignment][1], "extrapolating": extrapolating, "file": "blend.vtp",
+            "seconds": round(time.perf_counter() - start, 4)}, surface
