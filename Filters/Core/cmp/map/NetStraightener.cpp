@@ -1,11 +1,13 @@
 #include <cmp/map/NetStraightener.h>
 
+#include <cmp/map/PatchParameterization.h>
 #include <cmp/numerics/MeanValueSystem.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cmp
 {
@@ -13,6 +15,18 @@ namespace
 {
 
 constexpr double kTwoPi = 6.283185307179586;
+/// Cutting along a map, a curve crossing an edge this close to one of its
+/// ends goes through that end instead (which then moves onto the curve).
+constexpr double kMapSnap = 1e-3;
+/// A vertex beside a cut curve may lie this far (in barycentric units) on
+/// its far side in the map (a crossing moved off an edge's end); it is put
+/// back on the curve's side, and the patch's map checked for flips.
+constexpr double kLargestOvershoot = 1e-3;
+/// How far towards its patch's centre a vertex splitting an edge between
+/// two curve points moves in the map, as a share of the way.
+constexpr double kRoomShift = 1e-3;
+/// Least barycentric coordinate of a vertex off the curves.
+constexpr double kOffCurve = 1e-9;
 /// Cuts closer than this fraction of an edge to its ends are moved away.
 constexpr double kSmallestCut = 1e-3;
 
@@ -142,7 +156,205 @@ public:
     return {};
   }
 
+  /// Cuts `in`'s surface anew along the preimages of L0's edges under the
+  /// map `points` (one per vertex of `in.net.mesh`), and gives every
+  /// vertex its place in its patch's base triangle.
+  Status recut(const StraightenedNet& in, const BaseCharts& charts, std::vector<BasePoint> points,
+    PatchParameterization& map)
+  {
+    out_ = in;
+    charts_ = &charts;
+    points_ = std::move(points);
+    lenientAtVertices_ = true;
+    cuttingCurves_ = true;
+    EditableMesh& mesh = net_.mesh;
+    for (int h = 0; h < mesh.halfedgeCount(); ++h)
+      mesh.setTag(h, -1);
+    for (auto& curve : net_.curves)
+      curve.clear();
+    marks_.assign(mesh.vertexCount(), 0);
+    marked_.clear();
+    for (int v : net_.landmarkVertex)
+      mark(v);
+    const int edges = static_cast<int>(net_.baseEdges.size());
+    for (int e = 0; e < edges; ++e)
+    {
+      const int a = net_.baseEdges[e][0], b = net_.baseEdges[e][1];
+      const int left = net_.leftTriangle[e];
+      // The rhombus of the edge's two triangles, in the left one's frame.
+      uv_.assign(mesh.vertexCount(), Vec2::Zero());
+      std::vector<char> charted(mesh.vertexCount(), 0);
+      const Triangle& lt = domain_.mesh.triangles[left];
+      // Beyond the left triangle's charts, through the right one's (an
+      // edge away, so laid the one way): the rhombus and all round it.
+      const int right = net_.rightTriangle[e];
+      const std::array<Vec2, 3>* rightCorners = charts.corners(left, right);
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+      {
+        Vec2 inRight;
+        if (charts.inFrame(left, points_[v], uv_[v]))
+          charted[v] = 1;
+        else if (rightCorners && charts.inFrame(right, points_[v], inRight))
+        {
+          const std::array<double, 3> c = BaseCharts::barycentric({ right, inRight });
+          uv_[v] = c[0] * (*rightCorners)[0] + c[1] * (*rightCorners)[1] + c[2] * (*rightCorners)[2];
+          charted[v] = 1;
+        }
+      }
+      region_.clear();
+      inRegion_.assign(mesh.triangleCount(), 0);
+      for (int t = 0; t < mesh.triangleCount(); ++t)
+      {
+        const Triangle& tri = mesh.triangle(t);
+        if (charted[tri[0]] && charted[tri[1]] && charted[tri[2]] &&
+          cross2(uv_[tri[1]] - uv_[tri[0]], uv_[tri[2]] - uv_[tri[0]]) > 0.0)
+        {
+          region_.push_back(t);
+          inRegion_[t] = 1;
+        }
+      }
+      std::vector<WalkEvent> events;
+      std::vector<int> curve;
+      const int from = net_.landmarkVertex[a], to = net_.landmarkVertex[b];
+      if (!walk(from, to, kMapSnap, events) || !cut(from, events, curve))
+        return Status::error("cutting along the map: the preimage of L0's edge " + std::to_string(e) +
+          " leaves the map's chart");
+      // Curve points sit on the edge exactly.
+      const int ia = static_cast<int>(std::find(lt.begin(), lt.end(), a) - lt.begin());
+      const int ib = static_cast<int>(std::find(lt.begin(), lt.end(), b) - lt.begin());
+      const Vec2 pa = BaseCharts::corner(ia), pb = BaseCharts::corner(ib);
+      for (std::size_t i = 1; i + 1 < curve.size(); ++i)
+      {
+        const int v = curve[i];
+        const Vec2 at = uv_[v];
+        const double lambda = std::clamp((at - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
+        std::array<double, 3> c{ 0.0, 0.0, 0.0 };
+        c[ia] = 1.0 - lambda;
+        c[ib] = lambda;
+        points_[v] = BaseCharts::fromBarycentric(left, c);
+      }
+      for (int v : curve)
+        mark(v);
+      if (!setCurveTags(curve, e))
+        return Status::error("cutting along the map: the preimage of L0's edge " + std::to_string(e) +
+          " runs along another's");
+      net_.curves[e] = std::move(curve);
+    }
+    clearMarks();
+    lenientAtVertices_ = false;
+    cuttingCurves_ = false;
+    for (int bv = 0; bv < domain_.mesh.vertexCount(); ++bv)
+      if (!curvesLeaveInOrder(bv))
+        return Status::error("cutting along the map: the curves leave landmark " + std::to_string(bv) +
+          " out of L0's order");
+    if (Status s = labelPatches(net_); !s.ok())
+      return Status::error("cutting along the map: " + s.message());
+    makeRoomBetweenCurves();
+    if (Status s = rebuild(); !s.ok())
+      return s;
+    return mapOntoPatches(map);
+  }
+
 private:
+  /// The place of a vertex splitting an edge of patch triangle `triangle`
+  /// between two curve points: interpolated in that patch, then moved a
+  /// little towards its centre, off the curves the two ends may share
+  /// (which would leave the halves without area).
+  BasePoint roomPoint(int triangle, int a, int b, double t)
+  {
+    const int patch = net_.patchOfTriangle[triangle];
+    Vec2 pa, pb;
+    BasePoint result;
+    if (patch < 0 || !charts_->inFrame(patch, points_[a], pa) || !charts_->inFrame(patch, points_[b], pb))
+    {
+      mapFailed_ = true;
+      return points_[a];
+    }
+    const Vec2 centre = (BaseCharts::corner(0) + BaseCharts::corner(1) + BaseCharts::corner(2)) / 3.0;
+    Vec2 at = (1.0 - t) * pa + t * pb;
+    at += kRoomShift * (centre - at);
+    if (!charts_->locate(patch, at, result, 1e-9))
+      mapFailed_ = true;
+    return result;
+  }
+
+  /// Every vertex's place in the lowest-numbered patch holding it, and the
+  /// map's flips and crowding per patch.
+  Status mapOntoPatches(PatchParameterization& map)
+  {
+    if (mapFailed_)
+      return Status::error("cutting along the map: a new vertex fell outside the map's charts");
+    const EditableMesh& mesh = net_.mesh;
+    map = PatchParameterization{};
+    onCurve_.assign(mesh.vertexCount(), 0);
+    for (const auto& curve : net_.curves)
+      for (int v : curve)
+        onCurve_[v] = 1;
+    map.baseTriangle.assign(mesh.vertexCount(), -1);
+    map.baseCoordinates.assign(mesh.vertexCount(), { 0.0, 0.0, 0.0 });
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+      for (int v : mesh.triangle(t))
+        if (map.baseTriangle[v] < 0 || net_.patchOfTriangle[t] < map.baseTriangle[v])
+          map.baseTriangle[v] = net_.patchOfTriangle[t];
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+    {
+      const int patch = map.baseTriangle[v];
+      Vec2 at;
+      if (patch < 0 || !charts_->inFrame(patch, points_[v], at))
+        return Status::error("cutting along the map: point " + std::to_string(v) + " is not in its patch's chart");
+      std::array<double, 3> c = barycentricIn({ BaseCharts::corner(0), BaseCharts::corner(1), BaseCharts::corner(2) }, at);
+      if (std::min({ c[0], c[1], c[2] }) < -kLargestOvershoot)
+        return Status::error("cutting along the map: point " + std::to_string(v) + " lies outside its patch");
+      // Off the curves, a point the cut left on a curve's far side is
+      // mirrored back across it (kept off it, so its triangles keep area).
+      const bool onCurve = onCurve_[v] != 0;
+      double sum = 0.0;
+      for (double& x : c)
+        sum += (x = onCurve ? (x < 1e-15 ? 0.0 : x) : std::max(std::abs(x), kOffCurve));
+      for (double& x : c)
+        x /= sum;
+      map.baseCoordinates[v] = c;
+    }
+    for (std::size_t b = 0; b < net_.landmarkVertex.size(); ++b)
+    {
+      const int v = net_.landmarkVertex[b];
+      const Triangle& tri = domain_.mesh.triangles[map.baseTriangle[v]];
+      map.baseCoordinates[v] = { 0.0, 0.0, 0.0 };
+      map.baseCoordinates[v][std::find(tri.begin(), tri.end(), static_cast<int>(b)) - tri.begin()] = 1.0;
+    }
+    map.smallestRelativeArea = 1.0;
+    std::vector<double> surfaceArea(domain_.mesh.triangleCount(), 0.0);
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      const Triangle& tri = mesh.triangle(t);
+      surfaceArea[net_.patchOfTriangle[t]] +=
+        0.5 * (mesh.point(tri[1]) - mesh.point(tri[0])).cross(mesh.point(tri[2]) - mesh.point(tri[0])).norm();
+    }
+    map.smallestAreaRatio = std::numeric_limits<double>::infinity();
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      const int patch = net_.patchOfTriangle[t];
+      std::array<Vec2, 3> c;
+      for (int k = 0; k < 3; ++k)
+      {
+        std::array<double, 3> coordinates;
+        const int v = mesh.triangle(t)[k];
+        if (!coordinatesInTriangle(domain_, map.baseTriangle[v], map.baseCoordinates[v], patch, coordinates))
+          return Status::error("cutting along the map: a corner of triangle " + std::to_string(t) + " is not in its patch");
+        c[k] = Vec2(coordinates[1], coordinates[2]);
+      }
+      const double share = cross2(c[1] - c[0], c[2] - c[0]);
+      map.smallestRelativeArea = std::min(map.smallestRelativeArea, share);
+      if (!(share > 0.0))
+        ++map.flippedTriangles;
+      const Triangle& tri = mesh.triangle(t);
+      const double area = 0.5 * (mesh.point(tri[1]) - mesh.point(tri[0])).cross(mesh.point(tri[2]) - mesh.point(tri[0])).norm();
+      if (surfaceArea[patch] > 0.0)
+        map.smallestAreaRatio = std::min(map.smallestAreaRatio, share * surfaceArea[patch] / std::max(area, 1e-300));
+    }
+    return {};
+  }
+
   // ---- One landmark: map its star to the plane, cut straight curves -------
 
   /// Replaces the curves around base vertex `center`; false (and nothing
@@ -316,7 +528,12 @@ private:
         do
         {
           if (!inRegion_[EditableMesh::triangleOf(h)])
-            return false;
+          {
+            if (!lenientAtVertices_)
+              return false;
+            h = mesh.nextAroundVertex(h);
+            continue;
+          }
           const Vec2& y = uv_[mesh.to(h)];
           const Vec2& z = uv_[mesh.to(EditableMesh::next(h))];
           const double cy = cross2(y - p, d), cz = cross2(d, z - p);
@@ -411,6 +628,9 @@ private:
     uv_.resize(mesh.vertexCount());
     uv_[m] = (1.0 - t) * uv_[a] + t * uv_[b];
     marks_.resize(mesh.vertexCount(), 0);
+    if (charts_)
+      // A curve's new point is put on its base edge below, from uv_.
+      points_.push_back(cuttingCurves_ ? points_[a] : roomPoint(t1, a, b, t));
     for (int parent : { t1, t2 })
     {
       net_.patchOfTriangle.push_back(net_.patchOfTriangle[parent]);
@@ -614,6 +834,7 @@ private:
     std::vector<int> newIndex(mesh.vertexCount(), -1);
     TriangleMesh compact;
     std::vector<SurfacePoint> points;
+    std::vector<BasePoint> mapPoints;
     std::vector<int> patch, inputTriangle;
     for (int t = 0; t < mesh.triangleCount(); ++t)
     {
@@ -627,6 +848,8 @@ private:
           newIndex[v] = compact.vertexCount();
           compact.points.push_back(mesh.point(v));
           points.push_back(out_.inputPoint[v]);
+          if (charts_)
+            mapPoints.push_back(points_[v]);
         }
         v = newIndex[v];
       }
@@ -643,6 +866,8 @@ private:
       return Status::error("internal error after straightening: " + s.message());
     out_.inputPoint = std::move(points);
     out_.inputTriangle = std::move(inputTriangle);
+    if (charts_)
+      points_ = std::move(mapPoints);
     if (Status s = labelPatches(net_); !s.ok())
       return s;
     if (net_.patchOfTriangle != patch)
@@ -662,8 +887,14 @@ private:
   std::vector<int> local_;
   std::vector<Vec2> uv_;           // planar map of the current star
   std::vector<char> marks_;        // vertices a new curve may not use
+  bool lenientAtVertices_ = false; // a walk passes over triangles outside the region round a vertex
+  const BaseCharts* charts_ = nullptr; // while cutting along a map: its charts
+  std::vector<BasePoint> points_;  // and every vertex's place in it
   std::vector<int> marked_;
   std::vector<int> ring_;
+  bool mapFailed_ = false;
+  bool cuttingCurves_ = false;
+  std::vector<char> onCurve_;
 };
 
 } // namespace
@@ -686,6 +917,18 @@ Status straightenNet(const TracedNet& traced, const BaseDomain& domain, Straight
   out = StraightenedNet{};
   Straightener straightener(domain, options, out, figures);
   return straightener.run(traced);
+}
+
+Status cutAlongMap(const StraightenedNet& in, const BaseDomain& domain, const BaseCharts& charts,
+  const std::vector<BasePoint>& points, StraightenedNet& out, PatchParameterization& map)
+{
+  if (points.size() != static_cast<std::size_t>(in.net.mesh.vertexCount()))
+    return Status::error("cutting along the map: the map does not belong to this net");
+  NetStraightenerOptions options;
+  NetStraightenerReport report;
+  out = StraightenedNet{};
+  Straightener straightener(domain, options, out, report);
+  return straightener.recut(in, charts, points, map);
 }
 
 } // namespace cmp

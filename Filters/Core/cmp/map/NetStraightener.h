@@ -6,6 +6,8 @@
 
 #include <cmp/basedomain/BaseDomain.h>
 #include <cmp/layout/PatchLayout.h>
+#include <cmp/map/BaseCharts.h>
+#include <cmp/map/PatchParameterization.h>
 #include <cmp/mesh/Status.h>
 
 #include <array>
@@ -94,5 +96,19 @@ struct StraightenedNet
 /// split, so every patch can be parameterized bijectively.
 Status straightenNet(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out,
   const NetStraightenerOptions& options = {}, NetStraightenerReport* report = nullptr);
+
+/// \brief Cuts the surface of `in` anew along the preimages of L0's edges
+///        under a map of the whole surface onto L0 (`points`, one per vertex
+///        of `in.net.mesh`, as `optimizeGlobalMap()` gives them): each curve
+///        is the straight segment between its landmarks in the chart of its
+///        edge's two base triangles, walked across the surface's triangles
+///        and cut into it (as straightening cuts its lines), and `map` gives
+///        every vertex of the result its place in its patch's base triangle
+///        (the lowest-numbered one for a vertex on a curve). Fails, naming
+///        the problem, where the map's curves would not make a layout
+///        equivalent to L0 (a curve that leaves its chart or runs along
+///        another, curves leaving a landmark out of order).
+Status cutAlongMap(const StraightenedNet& in, const BaseDomain& domain, const BaseCharts& charts,
+  const std::vector<BasePoint>& points, StraightenedNet& out, PatchParameterization& map);
 
 } // namespace cmp

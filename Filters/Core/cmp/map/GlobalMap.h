@@ -1,0 +1,61 @@
+#pragma once
+/// \file GlobalMap.h
+/// \brief One map of the whole surface onto the base domain, its curves
+///        free: only the landmarks stay at their base vertices, every other
+///        surface vertex moves across patch boundaries to lower the map's
+///        distortion against equilateral base triangles of equal area, and
+///        no step folds a triangle. Beyond the paper, whose curves stay where
+///        straightening put them (see Documentation/algorithm.md, "The map").
+
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/map/BaseCharts.h>
+#include <cmp/map/PatchParameterization.h>
+#include <cmp/mesh/Status.h>
+
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Tuning of `optimizeGlobalMap()`.
+struct GlobalMapOptions
+{
+  /// \brief Gauss-Seidel sweeps over the vertices at most.
+  int maximumSweeps = 200;
+  /// \brief A sweep that lowers the energy by less than this fraction ends
+  ///        the optimization.
+  double leastRelativeGain = 1e-4;
+};
+
+/// \brief What `optimizeGlobalMap()` did.
+struct GlobalMapReport
+{
+  int sweeps = 0;             ///< Sweeps made.
+  double distortionBefore = 0.0; ///< Area-weighted mean symmetric Dirichlet energy over its isometric value (1 best), before.
+  double distortionAfter = 0.0;  ///< The same after.
+  double maximumDistortion = 0.0; ///< The largest per-triangle value after.
+  int crossingVertices = 0;   ///< Vertices that left their patch's base triangle.
+};
+
+/// \brief Lowers the symmetric Dirichlet energy of the map `map` (the
+///        straightener's per-patch maps, as `parameterizePatches()` gives
+///        them) of `net`'s surface onto `domain`, each base triangle drawn
+///        equilateral with 1/F of the surface's area, letting vertices cross
+///        the curves; returns every vertex's new place in `points`.
+///
+/// Energy: sum over surface triangles of area x (|J|^2 + |J^-1|^2), J the
+/// map's differential, measured in a chart of the base triangles around
+/// the triangle's corners (`BaseCharts`): infinite for a triangle flipped
+/// or crushed, so every accepted move keeps the map bijective. Moves: each
+/// free vertex in turn, down its energy's gradient with a Newton step
+/// length along it, halved until its triangles' energy falls.
+///
+/// \pre `map` is bijective on every patch (no flipped triangle).
+/// Fails, naming the problem, if sizes disagree or a triangle of the
+/// starting map is flipped. Cost: linear in the surface per sweep.
+Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const BaseCharts& charts,
+  const PatchParameterization& map, std::vector<BasePoint>& points, const GlobalMapOptions& options = {},
+  GlobalMapReport* report = nullptr);
+
+} // namespace cmp

@@ -1,0 +1,141 @@
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/layout/LayoutValidator.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/map/BaseCharts.h>
+#include <cmp/map/GlobalMap.h>
+#include <cmp/map/NetStraightener.h>
+#include <cmp/map/PatchParameterization.h>
+#include "TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace cmp;
+
+namespace
+{
+
+/// 381 traced, straightened and parameterized on L0 built from itself.
+struct Straightened
+{
+  BaseDomain domain;
+  StraightenedNet straight;
+  PatchParameterization map;
+};
+
+Straightened straightened381()
+{
+  Straightened s;
+  const test::LandmarkedModel model = test::landmarkedRealModel("381");
+  TracedNet traced;
+  EXPECT_TRUE(buildBaseDomain(model.data.mesh, model.landmarks, s.domain).ok());
+  EXPECT_TRUE(traceFeatureNet(model.data.mesh, model.landmarks, s.domain, traced).ok());
+  EXPECT_TRUE(straightenNet(traced, s.domain, s.straight).ok());
+  EXPECT_TRUE(parameterizePatches(s.straight.net, s.domain, s.map).ok());
+  return s;
+}
+
+std::vector<BasePoint> pointsOf(const PatchParameterization& map)
+{
+  std::vector<BasePoint> points;
+  for (std::size_t v = 0; v < map.baseTriangle.size(); ++v)
+    points.push_back(BaseCharts::fromBarycentric(map.baseTriangle[v], map.baseCoordinates[v]));
+  return points;
+}
+
+} // namespace
+
+TEST(BaseCharts, UnfoldsEveryTriangleRoundAVertexAsAUnitEquilateralTriangle)
+{
+  const BaseDomain domain = test::octahedronDomain();
+  BaseCharts charts;
+  charts.build(domain);
+  const int count = domain.mesh.triangleCount();
+  int pairs = 0;
+  for (int anchor = 0; anchor < count; ++anchor)
+    for (int other = 0; other < count; ++other)
+    {
+      const Triangle& a = domain.mesh.triangles[anchor];
+      const Triangle& o = domain.mesh.triangles[other];
+      int shared = 0;
+      for (int v : o)
+        shared += std::count(a.begin(), a.end(), v);
+      const std::array<Vec2, 3>* c = charts.corners(anchor, other);
+      // Valence 4: the triangle opposite round a vertex has no chart.
+      if (shared == 0 || (shared == 1 && anchor != other && c == nullptr))
+      {
+        EXPECT_EQ(c, nullptr) << anchor << " " << other;
+        continue;
+      }
+      ASSERT_NE(c, nullptr) << anchor << " " << other;
+      ++pairs;
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_NEAR(((*c)[(k + 1) % 3] - (*c)[k]).norm(), 1.0, 1e-12);
+        // A vertex both have sits at the anchor's corner.
+        const auto it = std::find(a.begin(), a.end(), o[k]);
+        if (it != a.end())
+          EXPECT_LT(((*c)[k] - BaseCharts::corner(static_cast<int>(it - a.begin()))).norm(), 1e-12);
+      }
+      EXPECT_GT(cross2((*c)[1] - (*c)[0], (*c)[2] - (*c)[0]), 0.0);
+      // A point of `other` goes to the anchor's frame and back.
+      const BasePoint p = BaseCharts::fromBarycentric(other, { 0.2, 0.3, 0.5 });
+      Vec2 at;
+      BasePoint back;
+      ASSERT_TRUE(charts.inFrame(anchor, p, at));
+      ASSERT_TRUE(charts.locate(anchor, at, back));
+      EXPECT_EQ(back.triangle, other);
+      EXPECT_LT((back.position - p.position).norm(), 1e-12);
+    }
+  // Each triangle: itself and its 3 edge neighbours (round the octahedron's
+  // valence-4 vertices, the other triangle is the opposite one).
+  EXPECT_EQ(pairs, count * 4);
+}
+
+TEST(GlobalMap, LowersTheDistortionOfARealModelsMapAndKeepsItBijective)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const Straightened s = straightened381();
+  BaseCharts charts;
+  charts.build(s.domain);
+  std::vector<BasePoint> points;
+  GlobalMapOptions options;
+  options.maximumSweeps = 10;
+  GlobalMapReport report;
+  ASSERT_TRUE(optimizeGlobalMap(s.straight.net, s.domain, charts, s.map, points, options, &report).ok());
+  EXPECT_EQ(report.sweeps, 10);
+  EXPECT_LT(report.distortionAfter, 0.9 * report.distortionBefore);
+  EXPECT_TRUE(std::isfinite(report.maximumDistortion)); // no triangle flipped or crushed
+  EXPECT_GT(report.crossingVertices, 0); // curves are free
+  const std::vector<BasePoint> start = pointsOf(s.map);
+  for (int v : s.straight.net.landmarkVertex)
+  {
+    EXPECT_EQ(points[v].triangle, start[v].triangle);
+    EXPECT_EQ(points[v].position, start[v].position);
+  }
+  // A flipped start is refused.
+  PatchParameterization flipped = s.map;
+  for (auto& c : flipped.baseCoordinates)
+    std::swap(c[1], c[2]);
+  EXPECT_NE(optimizeGlobalMap(s.straight.net, s.domain, charts, flipped, points, options).message().find("flipped"),
+    std::string::npos);
+}
+
+TEST(GlobalMap, CuttingAlongThePatchMapsRebuildsAnEquivalentLayout)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const Straightened s = straightened381();
+  BaseCharts charts;
+  charts.build(s.domain);
+  StraightenedNet cut;
+  PatchParameterization map;
+  const Status status = cutAlongMap(s.straight, s.domain, charts, pointsOf(s.map), cut, map);
+  ASSERT_TRUE(status.ok()) << status.message();
+  for (const std::string& problem : validateLayout(toLabelledSurface(cut.net, s.domain), toBaseTriangles(s.domain)))
+    ADD_FAILURE() << problem;
+  EXPECT_EQ(map.flippedTriangles, 0);
+  EXPECT_NEAR(netLength(cut.net), netLength(s.straight.net), 0.01 * netLength(s.straight.net));
+  EXPECT_EQ(cutAlongMap(s.straight, s.domain, charts, {}, cut, map).message().find("does not belong") == std::string::npos,
+    false);
+}
