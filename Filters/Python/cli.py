@@ -132,7 +132,7 @@ def main(argv=None):
             traced = trace_net(model, domain, args.output)
             print("%s straightening the net (traced in %.2f s)" % (step, model.report["seconds"]["trace"]),
                   flush=True)
-            straighten_net(model, domain, traced, args.output, args.lower_stretch)
+            straighten_net(model, domain, traced, args.output, args.lower_stretch, args.free_curves)
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
         except StageError as error:
             model.fail(error)

@@ -143,14 +143,16 @@ def trace_net(model, domain, output_folder):
     return surface
 
 
-def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
+def straighten_net(model, domain, traced, output_folder, lower_stretch=False, free_curves=False):
     """NetStraightener on the tracer's surface: writes NAME.param.vtp (the
     re-triangulated surface with PatchId, BaseTriangle and BaseCoordinates)
     and NAME.straight-curves.vtp (the straightened curves). With
     lower_stretch, every patch's map is made less stretched (the filter's
-    LowerStretch)."""
+    LowerStretch); with free_curves, the curves move where one map of the
+    whole surface puts them (FreeCurves)."""
     straightener = cmp.vtkCMPNetStraightener()
     straightener.SetLowerStretch(lower_stretch)
+    straightener.SetFreeCurves(free_curves)
     surface, value = _run_net_filter(model, "straighten", straightener, traced, domain,
                                      output_folder, ".param.vtp", ".straight-curves.vtp")
     model.report["straighten"] = {
@@ -172,7 +174,16 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False):
         "net_valid": bool(value("NetValid")),
         "vertices": surface.GetNumberOfPoints(),
         "lower_stretch": bool(lower_stretch),
+        "free_curves": bool(free_curves),
     }
+    if free_curves:
+        model.report["straighten"]["map"] = {
+            "applied": bool(value("FreeCurvesApplied")),
+            "distortion_before": significant(value("MapDistortionBefore"), 4),
+            "distortion_after": significant(value("MapDistortionAfter"), 4),
+            "sweeps": int(value("MapSweeps")),
+            "crossing_vertices": int(value("MapCrossingVertices")),
+        }
     if not model.report["straighten"]["net_valid"]:
         raise StageError("the straightened net failed the layout check")
     model.parameterized = surface

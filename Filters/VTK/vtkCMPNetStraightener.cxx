@@ -1,5 +1,7 @@
 #include "vtkCMPNetStraightener.h"
 
+#include <cmp/map/GlobalMap.h>
+
 #include <cmp/layout/CurveSpread.h>
 #include <cmp/layout/LayoutValidator.h>
 #include <cmp/map/NetStraightener.h>
@@ -206,11 +208,36 @@ int vtkCMPNetStraightener::RequestData(
     status = cmp::straightenNet(traced, domain, straight, options, &report);
   }
   cmp::PatchParameterization parameterization;
+  cmp::FreeCurvesReport freeCurves;
   if (status.ok())
   {
     cmp::PatchParameterizationOptions options;
     options.lowerStretch = this->LowerStretch;
     status = cmp::parameterizePatches(straight.net, domain, parameterization, options);
+    if (status.ok() && this->FreeCurves)
+    {
+      if (this->MapSweeps < 0)
+        status = cmp::Status::error("MapSweeps must be 0 or more (it is " + std::to_string(this->MapSweeps) + ")");
+      cmp::GlobalMapOptions mapOptions;
+      mapOptions.maximumSweeps = std::max(0, this->MapSweeps);
+      cmp::StraightenedNet moved;
+      cmp::PatchParameterization movedMap;
+      if (status.ok())
+        status = cmp::freeCurves(straight, domain, parameterization, mapOptions, options, moved, movedMap, &freeCurves);
+      if (status.ok())
+      {
+        straight = std::move(moved);
+        parameterization = std::move(movedMap);
+        if (freeCurves.applied)
+        {
+          report.netLengthAfter = cmp::netLength(straight.net);
+          report.areaVariationAfter =
+            cmp::areaVariation(cmp::patchAreas(straight.net, domain.mesh.triangleCount()));
+        }
+        else
+          vtkWarningMacro(<< model << "FreeCurves kept the straightened curves: " << freeCurves.reason);
+      }
+    }
   }
   if (!status.ok())
   {
@@ -250,6 +277,14 @@ int vtkCMPNetStraightener::RequestData(
     cmp::bridge::setFieldValue(field, "WidestCurveGap", widestGap.degrees);
     cmp::bridge::setFieldValue(field, "WidestCurveGapFeature", widestGapFeature);
     cmp::bridge::setFieldValue(field, "NetValid", problem.empty() ? 1 : 0);
+    if (this->FreeCurves)
+    {
+      cmp::bridge::setFieldValue(field, "FreeCurvesApplied", freeCurves.applied ? 1 : 0);
+      cmp::bridge::setFieldValue(field, "MapDistortionBefore", freeCurves.map.distortionBefore);
+      cmp::bridge::setFieldValue(field, "MapDistortionAfter", freeCurves.map.distortionAfter);
+      cmp::bridge::setFieldValue(field, "MapSweeps", freeCurves.map.sweeps);
+      cmp::bridge::setFieldValue(field, "MapCrossingVertices", freeCurves.map.crossingVertices);
+    }
     // The outputs are built anew: keep the model's name for the remesher.
     cmp::bridge::copySourceFile(input, output);
   }
@@ -264,4 +299,6 @@ void vtkCMPNetStraightener::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
   os << indent << "LowerStretch: " << this->LowerStretch << "\n";
+  os << indent << "FreeCurves: " << this->FreeCurves << "\n";
+  os << indent << "MapSweeps: " << this->MapSweeps << "\n";
 }

@@ -83,6 +83,29 @@ public:
   /// \brief Lower the stretch of every patch's map.
   vtkBooleanMacro(LowerStretch, bool);
 
+  /// \brief Move the curves where one low-distortion map of the whole
+  ///        surface onto L0 puts its edges (default off; `cmp::freeCurves()`):
+  ///        after straightening, every vertex but the landmarks may cross the
+  ///        curves to lower the map's symmetric Dirichlet energy against
+  ///        equilateral base triangles of equal area, then the surface is cut
+  ///        anew along the map's preimages of L0's edges and every patch is
+  ///        parameterized again (with LowerStretch as set). Where that would
+  ///        not give an equivalent layout, the straightened net is kept with
+  ///        a warning. Field arrays `FreeCurvesApplied`, `MapDistortionBefore`,
+  ///        `MapDistortionAfter`, `MapSweeps`, `MapCrossingVertices`. Measured
+  ///        figures are in Documentation/filters/NetStraightener.md.
+  vtkSetMacro(FreeCurves, bool);
+  /// \brief Move the curves where one map of the whole surface puts them.
+  vtkGetMacro(FreeCurves, bool);
+  /// \brief Move the curves where one map of the whole surface puts them.
+  vtkBooleanMacro(FreeCurves, bool);
+
+  /// \brief Gauss-Seidel sweeps of the whole-surface map at most (default
+  ///        200; >= 0), with FreeCurves.
+  vtkSetMacro(MapSweeps, int);
+  /// \brief Sweeps of the whole-surface map at most.
+  vtkGetMacro(MapSweeps, int);
+
 protected:
   vtkCMPNetStraightener();
   ~vtkCMPNetStraightener() override = default;
@@ -97,4 +120,6 @@ private:
   double Tolerance = 0.002;
   double SnapTolerance = 0.1;
   bool LowerStretch = false;
+  bool FreeCurves = false;
+  int MapSweeps = 200;
 };

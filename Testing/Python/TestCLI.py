@@ -894,6 +894,35 @@ def case_lower_stretch(tmp):
           % (crowded, spread, far, near))
 
 
+def case_free_curves(tmp):
+    """--free-curves: every model's curves are moved by the whole-surface
+    map (report.json says so, with the map's figures), the remeshes still
+    share one connectivity; without the flag the report says it was off."""
+    pairs = [(shrec("381", "off"), shrec("381", "vts")), (shrec("387", "off"), shrec("387", "vts"))]
+    for flag in ([], ["--free-curves"]):
+        out = os.path.join(tmp, "out" + "".join(flag))
+        status, stdout, stderr, report = run_cli(
+            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--lower-stretch", "--no-render"]
+            + flag, out)
+        check_equal(status, 0, "exit status %s (stderr: %s)" % (flag, stderr))
+        check_remeshed(out, report, stdout, ["381", "387"], 3)
+        for name in ("381", "387"):
+            straighten = report["models"][name]["straighten"]
+            check_equal(straighten["free_curves"], bool(flag), name + ": free_curves")
+            check_equal(straighten["flipped_triangles"], 0, name + ": flipped triangles " + str(flag))
+            if not flag:
+                check("map" not in straighten, name + ": map figures without --free-curves")
+                continue
+            figures = straighten["map"]
+            check(figures["applied"], name + ": the curves were not moved")
+            check_equal(figures["sweeps"], 200, name + ": sweeps")
+            check(figures["distortion_after"] < 0.95 * figures["distortion_before"],
+                  "%s: map distortion %g -> %g" % (name, figures["distortion_before"], figures["distortion_after"]))
+            check(figures["crossing_vertices"] > 0, name + ": no vertex crossed a curve")
+            print("%s: map distortion %g -> %g, %d vertices crossed a curve"
+                  % (name, figures["distortion_before"], figures["distortion_after"], figures["crossing_vertices"]))
+
+
 def case_relax_samples(tmp):
     """--relax-samples 4: one set of moved base locations for the collection
     (the same connectivity as without, every remesh carrying the shared
@@ -1397,6 +1426,7 @@ CASES = {
     "given-base-domain": case_given_base_domain,
     "failure-isolation": case_failure_isolation,
     "lower-stretch": case_lower_stretch,
+    "free-curves": case_free_curves,
     "fold-repair": case_fold_repair,
     "relax-samples": case_relax_samples,
     "argument-errors": case_argument_errors,

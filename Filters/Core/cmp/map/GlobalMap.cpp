@@ -359,4 +359,38 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
   return {};
 }
 
+Status freeCurves(const StraightenedNet& straight, const BaseDomain& domain, const PatchParameterization& map,
+  const GlobalMapOptions& mapOptions, const PatchParameterizationOptions& options, StraightenedNet& out,
+  PatchParameterization& outMap, FreeCurvesReport* report)
+{
+  FreeCurvesReport result;
+  BaseCharts charts;
+  charts.build(domain);
+  std::vector<BasePoint> points;
+  if (Status s = optimizeGlobalMap(straight.net, domain, charts, map, points, mapOptions, &result.map); !s.ok())
+    return s;
+  StraightenedNet cut;
+  PatchParameterization cutMap;
+  Status s = cutAlongMap(straight, domain, charts, points, cut, cutMap);
+  if (s.ok())
+    s = parameterizePatches(cut.net, domain, cutMap, options);
+  if (s.ok() && cutMap.flippedTriangles > 0)
+    s = Status::error(std::to_string(cutMap.flippedTriangles) + " triangles flip in the new patch maps");
+  result.applied = s.ok();
+  if (result.applied)
+  {
+    out = std::move(cut);
+    outMap = std::move(cutMap);
+  }
+  else
+  {
+    result.reason = s.message();
+    out = straight;
+    outMap = map;
+  }
+  if (report)
+    *report = result;
+  return {};
+}
+
 } // namespace cmp

@@ -10,9 +10,11 @@
 #include <cmp/basedomain/BaseDomain.h>
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/map/BaseCharts.h>
+#include <cmp/map/NetStraightener.h>
 #include <cmp/map/PatchParameterization.h>
 #include <cmp/mesh/Status.h>
 
+#include <string>
 #include <vector>
 
 namespace cmp
@@ -57,5 +59,25 @@ struct GlobalMapReport
 Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const BaseCharts& charts,
   const PatchParameterization& map, std::vector<BasePoint>& points, const GlobalMapOptions& options = {},
   GlobalMapReport* report = nullptr);
+
+/// \brief What `freeCurves()` did.
+struct FreeCurvesReport
+{
+  GlobalMapReport map; ///< The global map's figures.
+  bool applied = false; ///< Whether the net was cut anew (false: kept as straightened).
+  std::string reason;   ///< Why not, when not applied.
+};
+
+/// \brief The straightened net with its curves moved where one
+///        low-distortion map of the whole surface puts L0's edges:
+///        `optimizeGlobalMap()` from the patch maps `map`, then
+///        `cutAlongMap()`, then every patch parameterized anew on its new
+///        curves (`parameterizePatches()` with `options`). Where the cut
+///        would not give an equivalent layout or a patch map flips, `out`
+///        and `outMap` are `straight` and `map` unchanged and the report
+///        says why (never an invalid layout).
+Status freeCurves(const StraightenedNet& straight, const BaseDomain& domain, const PatchParameterization& map,
+  const GlobalMapOptions& mapOptions, const PatchParameterizationOptions& options, StraightenedNet& out,
+  PatchParameterization& outMap, FreeCurvesReport* report = nullptr);
 
 } // namespace cmp
