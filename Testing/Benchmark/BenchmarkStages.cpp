@@ -1,5 +1,6 @@
 #include "BenchmarkStages.h"
 
+#include <cmp/map/GlobalMap.h>
 #include <cmp/remesh/FoldRepair.h>
 
 #include <cmp/analysis/LoopWavelet.h>
@@ -232,6 +233,44 @@ Status lowerStretchStage(ModelContext& ctx)
   return {};
 }
 
+/// \brief `free_curves`: Net Straightener's FreeCurves with LowerStretch
+///        (`freeCurves()`: the whole-surface map, the cut along it and the
+///        patches parameterized anew), then a level-5 remesh with its
+///        distance and folds. A measurement, not a pipeline step; not on the
+///        subdivided surface. free_curves_seconds is freeCurves() alone.
+Status freeCurvesStage(ModelContext& ctx)
+{
+  using Clock = std::chrono::steady_clock;
+  PatchParameterizationOptions options;
+  options.lowerStretch = true;
+  StraightenedNet moved;
+  PatchParameterization map;
+  FreeCurvesReport report;
+  const Clock::time_point start = Clock::now();
+  if (Status status = freeCurves(ctx.straight, ctx.traceDomain(), ctx.parameterization, {}, options, moved, map, &report);
+      !status.ok())
+    return status;
+  setFigure(ctx.figures, "free_curves_seconds", std::chrono::duration<double>(Clock::now() - start).count());
+  setFigure(ctx.figures, "free_curves_applied", report.applied ? 1.0 : 0.0);
+  setFigure(ctx.figures, "free_curves_map_distortion_before", report.map.distortionBefore);
+  setFigure(ctx.figures, "free_curves_map_distortion_after", report.map.distortionAfter);
+  constexpr int level = 5;
+  SemiRegularMesh remesh;
+  std::vector<SurfaceSample> samples;
+  if (Status status = buildSemiRegularMesh(ctx.traceDomain(), level, remesh); !status.ok())
+    return status;
+  if (Status status = placeOnSurface(remesh, moved.net, ctx.traceDomain(), map, samples); !status.ok())
+    return status;
+  FoldRepairReport repair;
+  if (Status status = repairFolds(remesh, moved.net.mesh, samples, {}, &repair); !status.ok())
+    return status;
+  const TriangleMesh placed{ samplePositions(moved.net, samples), remesh.triangles };
+  setFigure(ctx.figures, "free_curves_hausdorff_per_diagonal_l5",
+    surfaceDistance(placed, ctx.surface()).hausdorff() / boundingBoxDiagonal(ctx.surface()));
+  setFigure(ctx.figures, "free_curves_folded_after_repair_l5", repair.foldedAfter);
+  return {};
+}
+
 /// \brief `sample_relaxation`: the Semi-Regular Remesher's sample
 ///        relaxation (4 rounds, the model alone) on the remesh of
 ///        `remeshLevel()`. A measurement: the stage's time includes indexing
@@ -335,6 +374,7 @@ const std::vector<Stage>& pipelineStages()
     // level-6 remesh time there.
     { "remesh_distance", remeshDistanceStage, isNotSubdivided, false },
     { "lower_stretch", lowerStretchStage, {}, false },
+    { "free_curves", freeCurvesStage, isNotSubdivided, false },
     { "sample_relaxation", sampleRelaxationStage, {}, false },
     { "wavelet", waveletStage, {}, false },
   };
