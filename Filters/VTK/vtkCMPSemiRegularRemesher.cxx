@@ -406,8 +406,9 @@ int vtkCMPSemiRegularRemesher::RequestData(
     return 0;
   };
   // The properties are the same on every rank: a bad one stops them all.
-  if (this->Level < 0 || this->Level > 8)
-    return fail("Level must be between 0 and 8 (it is " + std::to_string(this->Level) + ")");
+  if (!cmp::isRemeshLevel(this->Level))
+    return fail("Level must be between 0 and " + std::to_string(cmp::kMaximumRemeshLevel) + " (it is " +
+      std::to_string(this->Level) + ")");
   if (!(this->AdaptiveTolerance >= 0.0) || !std::isfinite(this->AdaptiveTolerance))
   {
     std::ostringstream message;

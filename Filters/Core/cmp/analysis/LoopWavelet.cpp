@@ -99,8 +99,8 @@ Status notUniform(const std::string& why)
 Status countLevelVertices(const SemiRegularMesh& mesh, std::vector<int>& vertexCount)
 {
   const int level = mesh.level;
-  if (level < 0 || level > 8)
-    return notUniform("its level " + std::to_string(level) + " is out of range (0 to 8)");
+  if (!isRemeshLevel(level))
+    return notUniform("its " + remeshLevelProblem(level));
   if (mesh.triangles.empty() || mesh.triangles.size() % (std::size_t(1) << (2 * level)) != 0)
     return notUniform("it has " + std::to_string(mesh.triangles.size()) + " triangles, not a multiple of 4^" +
       std::to_string(level));

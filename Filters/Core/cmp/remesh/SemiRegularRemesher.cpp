@@ -105,10 +105,15 @@ bool locationInBaseTriangle(const BaseDomain& domain, const BaseLocation& at, in
   return true;
 }
 
+std::string remeshLevelProblem(int level)
+{
+  return "level " + std::to_string(level) + " is out of range (0 to " + std::to_string(kMaximumRemeshLevel) + ")";
+}
+
 Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out)
 {
-  if (level < 0 || level > 8)
-    return Status::error("level " + std::to_string(level) + " is out of range (0 to 8)");
+  if (!isRemeshLevel(level))
+    return Status::error(remeshLevelProblem(level));
   if (Status s = checkBaseDomain(domain); !s.ok())
     return s;
   const auto around = trianglesAroundBaseVertices(domain);
@@ -360,8 +365,8 @@ void writeRemesh(const RefinementTree& tree, int featureCount, SemiRegularMesh& 
 Status buildAdaptiveSemiRegularMesh(
   const BaseDomain& domain, int maximumLevel, const SplitRule& needsSplit, SemiRegularMesh& out)
 {
-  if (maximumLevel < 0 || maximumLevel > 8)
-    return Status::error("level " + std::to_string(maximumLevel) + " is out of range (0 to 8)");
+  if (!isRemeshLevel(maximumLevel))
+    return Status::error(remeshLevelProblem(maximumLevel));
   if (Status s = checkBaseDomain(domain); !s.ok())
     return s;
   const auto around = trianglesAroundBaseVertices(domain);

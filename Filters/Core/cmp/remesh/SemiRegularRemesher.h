@@ -13,6 +13,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace cmp
@@ -59,7 +60,18 @@ struct SemiRegularMesh
   int vertexCount() const { return static_cast<int>(locations.size()); }
 };
 
-/// \brief Builds the connectivity of `domain` refined `level` times (0..8).
+/// \brief The finest remesh level: L0 refined 8 times has 65,536 triangles
+///        per base triangle (2.5M for the 38 of a four-legged L0).
+constexpr int kMaximumRemeshLevel = 8;
+
+/// \brief Whether `level` is a remesh level (0 to `kMaximumRemeshLevel`).
+constexpr bool isRemeshLevel(int level) { return level >= 0 && level <= kMaximumRemeshLevel; }
+
+/// \brief Why `level` is not one, in the words every stage uses.
+std::string remeshLevelProblem(int level);
+
+/// \brief Builds the connectivity of `domain` refined `level` times (0 to
+///        `kMaximumRemeshLevel`).
 ///        Depends only on the base domain and the level.
 Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out);
 
