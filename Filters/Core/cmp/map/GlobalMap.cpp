@@ -63,11 +63,10 @@ double triangleEnergy(const Metric& metric, const std::array<Vec2, 3>& p, double
 class Optimizer
 {
 public:
-  Optimizer(const TracedNet& net, const BaseCharts& charts, std::vector<BasePoint>& points, double side)
+  Optimizer(const TracedNet& net, const BaseCharts& charts, std::vector<BasePoint>& points)
     : mesh_(net.mesh)
     , charts_(charts)
     , points_(points)
-    , side_(side)
     , pinned_(net.mesh.vertexCount(), 0)
     , metrics_(net.mesh.triangleCount())
   {
@@ -159,6 +158,9 @@ public:
   }
 
   bool pinned(int v) const { return pinned_[v] != 0; }
+
+  /// The side of every base triangle, drawn equilateral.
+  void setSide(double side) { side_ = side; }
 
   /// One move of free vertex v; true if it moved.
   bool relax(int v)
@@ -285,7 +287,7 @@ private:
   const EditableMesh& mesh_;
   const BaseCharts& charts_;
   std::vector<BasePoint>& points_;
-  double side_;
+  double side_ = 1.0;
   std::vector<char> pinned_;
   std::vector<Metric> metrics_;
   std::vector<Around> ring_;
@@ -314,13 +316,12 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
   }
 
   GlobalMapReport result;
-  Optimizer probeArea(net, charts, start, 1.0);
-  const double area = probeArea.totalArea();
+  Optimizer optimizer(net, charts, start);
+  const double area = optimizer.totalArea();
   if (!(area > 0.0) || baseTriangles <= 0)
     return Status::error("global map: the surface has no area");
   // Each base triangle equilateral, with 1/F of the surface's area.
-  const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * baseTriangles));
-  Optimizer optimizer(net, charts, start, side);
+  optimizer.setSide(std::sqrt(4.0 * area / (std::sqrt(3.0) * baseTriangles)));
   double energy = optimizer.totalEnergy();
   if (!std::isfinite(energy))
     return Status::error("global map: the starting map has a flipped or crushed triangle");
@@ -349,7 +350,7 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
       ++result.crossingVertices;
       continue;
     }
-    const std::array<double, 3> b = barycentricIn({ BaseCharts::corner(0), BaseCharts::corner(1), BaseCharts::corner(2) }, inPatch);
+    const std::array<double, 3> b = BaseCharts::barycentric({ patch, inPatch });
     if (std::min({ b[0], b[1], b[2] }) < -1e-9)
       ++result.crossingVertices;
   }

@@ -302,7 +302,7 @@ private:
       Vec2 at;
       if (patch < 0 || !charts_->inFrame(patch, points_[v], at))
         return Status::error("cutting along the map: point " + std::to_string(v) + " is not in its patch's chart");
-      std::array<double, 3> c = barycentricIn({ BaseCharts::corner(0), BaseCharts::corner(1), BaseCharts::corner(2) }, at);
+      std::array<double, 3> c = BaseCharts::barycentric({ patch, at });
       if (std::min({ c[0], c[1], c[2] }) < -kLargestOvershoot)
         return Status::error("cutting along the map: point " + std::to_string(v) + " lies outside its patch");
       // Off the curves, a point the cut left on a curve's far side is
@@ -323,12 +323,12 @@ private:
       map.baseCoordinates[v][std::find(tri.begin(), tri.end(), static_cast<int>(b)) - tri.begin()] = 1.0;
     }
     map.smallestRelativeArea = 1.0;
-    std::vector<double> surfaceArea(domain_.mesh.triangleCount(), 0.0);
+    std::vector<double> area(mesh.triangleCount()), surfaceArea(domain_.mesh.triangleCount(), 0.0);
     for (int t = 0; t < mesh.triangleCount(); ++t)
     {
       const Triangle& tri = mesh.triangle(t);
-      surfaceArea[net_.patchOfTriangle[t]] +=
-        0.5 * (mesh.point(tri[1]) - mesh.point(tri[0])).cross(mesh.point(tri[2]) - mesh.point(tri[0])).norm();
+      area[t] = 0.5 * (mesh.point(tri[1]) - mesh.point(tri[0])).cross(mesh.point(tri[2]) - mesh.point(tri[0])).norm();
+      surfaceArea[net_.patchOfTriangle[t]] += area[t];
     }
     map.smallestAreaRatio = std::numeric_limits<double>::infinity();
     for (int t = 0; t < mesh.triangleCount(); ++t)
@@ -347,10 +347,8 @@ private:
       map.smallestRelativeArea = std::min(map.smallestRelativeArea, share);
       if (!(share > 0.0))
         ++map.flippedTriangles;
-      const Triangle& tri = mesh.triangle(t);
-      const double area = 0.5 * (mesh.point(tri[1]) - mesh.point(tri[0])).cross(mesh.point(tri[2]) - mesh.point(tri[0])).norm();
       if (surfaceArea[patch] > 0.0)
-        map.smallestAreaRatio = std::min(map.smallestAreaRatio, share * surfaceArea[patch] / std::max(area, 1e-300));
+        map.smallestAreaRatio = std::min(map.smallestAreaRatio, share * surfaceArea[patch] / std::max(area[t], 1e-300));
     }
     return {};
   }
