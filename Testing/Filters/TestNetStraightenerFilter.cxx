@@ -68,7 +68,7 @@ void addProbeArrays(vtkPolyData* surface)
 /// `original` (the landmarked surface with probe arrays) traced against
 /// `l0` into `input`.
 void expectStraightened(vtkCMPNetStraightener* straightener, vtkPolyData* original, vtkPolyData* input,
-  vtkPolyData* l0, const std::string& what)
+  vtkPolyData* l0, const std::string& what, double lengthSlack = 1.02)
 {
   vtkPolyData* surface = straightener->GetOutput(0);
   vtkPolyData* curves = straightener->GetOutput(1);
@@ -80,7 +80,7 @@ void expectStraightened(vtkCMPNetStraightener* straightener, vtkPolyData* origin
   EXPECT_EQ(fieldValue(surface, "FlippedTriangles"), 0.0) << what;
   EXPECT_EQ(fieldValue(curves, "NetValid"), 1.0) << what;
   EXPECT_GE(fieldValue(surface, "Sweeps"), 1.0) << what;
-  EXPECT_LE(fieldValue(surface, "NetLengthAfter"), 1.02 * fieldValue(surface, "NetLengthBefore")) << what;
+  EXPECT_LE(fieldValue(surface, "NetLengthAfter"), lengthSlack * fieldValue(surface, "NetLengthBefore")) << what;
   EXPECT_NEAR(fieldValue(surface, "NetLengthPerSqrtAreaAfter"),
     fieldValue(surface, "NetLengthAfter") / std::sqrt(areaOf(original)), 1e-9)
     << what;
@@ -334,7 +334,6 @@ TEST(NetStraightenerFilter, FreeCurvesBringTheRemeshCloserToTheTailOf385)
   int index = 0;
   for (vtkCMPNetStraightener* straightener : { fixed.Get(), free.Get() })
   {
-    straightener->LowerStretchOn();
     straightener->SetInputData(0, input);
     straightener->SetInputData(1, l0);
     const RunResult result = run(straightener);
@@ -347,14 +346,19 @@ TEST(NetStraightenerFilter, FreeCurvesBringTheRemeshCloserToTheTailOf385)
     ASSERT_TRUE(remeshed.succeeded) << remeshed.error;
     distance[index++] = fieldValue(vtkPolyData::SafeDownCast(remesher->GetOutputDataObject(0)), "HausdorffDistanceRelative");
   }
-  expectStraightened(free, model, input, l0, "385 with FreeCurves");
+  // The curves follow the map, not the shortest paths: longer, within the
+  // 5% the layout may exceed its optimum.
+  expectStraightened(free, model, input, l0, "385 with FreeCurves", 1.05);
   vtkPolyData* moved = free->GetOutput(0);
   EXPECT_EQ(fieldValue(moved, "FreeCurvesApplied"), 1.0);
   EXPECT_LT(fieldValue(moved, "MapDistortionAfter"), 0.95 * fieldValue(moved, "MapDistortionBefore"));
-  EXPECT_EQ(fieldValue(moved, "MapSweeps"), 200.0);
+  EXPECT_GE(fieldValue(moved, "MapSweeps"), 1.0);
+  EXPECT_LE(fieldValue(moved, "MapSweeps"), 200.0);
   EXPECT_GT(fieldValue(moved, "MapCrossingVertices"), 1000.0);
-  // Measured at level 5: 4.6% -> 2.8% of the diagonal at the tail's tip.
-  EXPECT_LT(distance[1], 0.8 * distance[0]);
+  // The star solves give the tail room and the remesh samples the map's
+  // own places: the tail's tip is reached (see the benchmark's free_curves
+  // stage for the figures).
+  EXPECT_LT(distance[1], 0.5 * distance[0]);
   std::cout << "385: Hausdorff distance at level 5 " << distance[0] << " -> " << distance[1] << " with FreeCurves\n";
 
   free->SetMapSweeps(-1);

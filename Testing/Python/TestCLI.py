@@ -915,7 +915,7 @@ def case_free_curves(tmp):
                 continue
             figures = straighten["map"]
             check(figures["applied"], name + ": the curves were not moved")
-            check_equal(figures["sweeps"], 200, name + ": sweeps")
+            check(1 <= figures["sweeps"] <= 200, "%s: sweeps %r" % (name, figures["sweeps"]))
             check(figures["distortion_after"] < 0.95 * figures["distortion_before"],
                   "%s: map distortion %g -> %g" % (name, figures["distortion_before"], figures["distortion_after"]))
             check(figures["crossing_vertices"] > 0, name + ": no vertex crossed a curve")

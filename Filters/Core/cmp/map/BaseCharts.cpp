@@ -8,6 +8,11 @@
 namespace cmp
 {
 
+namespace
+{
+constexpr double kSixthTurn = 1.0471975511965976; // pi / 3
+}
+
 Vec2 BaseCharts::corner(int k)
 {
   return k == 0 ? Vec2(0.0, 0.0) : k == 1 ? Vec2(1.0, 0.0) : Vec2(0.5, 0.5 * std::sqrt(3.0));
@@ -160,6 +165,129 @@ bool BaseCharts::locate(int anchor, const Vec2& position, BasePoint& result, dou
     }
   }
   return false;
+}
+
+bool StarUnfolding::build(const BaseDomain& domain, int anchor, int center, int towards)
+{
+  const std::vector<Triangle>& triangles = domain.mesh.triangles;
+  triangles_ = &triangles;
+  const auto at = [](const Triangle& t, int v) { return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin()); };
+  // The triangle across edge (center, w) from triangle `from`.
+  const auto across = [&](int from, int w) {
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+      if (t != from && at(triangles[t], center) < 3 && at(triangles[t], w) < 3)
+        return t;
+    return -1;
+  };
+  int valence = 0;
+  for (const Triangle& t : triangles)
+    valence += at(t, center) < 3 ? 1 : 0;
+  const Triangle& first = triangles[anchor];
+  const int c = at(first, center);
+  if (c > 2 || at(first, towards) > 2 || towards == center || valence < 3)
+    return false;
+  // In a triangle (center, r, s), counter-clockwise round the centre, the
+  // next triangle is across spoke s and the previous one across spoke r.
+  const bool edgeBehind = first[(c + 1) % 3] == towards; // the edge is spoke r of the anchor
+  const std::array<Vec2, 3> anchorCorners{ BaseCharts::corner(0), BaseCharts::corner(1), BaseCharts::corner(2) };
+  center_ = center;
+  centre_ = anchorCorners[c];
+  // The whole star both ways round from the anchor: each step reflects the
+  // far corner across the shared spoke (two equilateral triangles make a
+  // rhombus).
+  const auto walk = [&](int triangle, std::array<Vec2, 3> corners, bool counterClockwise, int steps,
+                      std::vector<Sector>& out) {
+    out.push_back({ triangle, corners });
+    for (int i = 0; i < steps; ++i)
+    {
+      const Triangle& tri = triangles[triangle];
+      const int k = at(tri, center);
+      const int shared = counterClockwise ? tri[(k + 2) % 3] : tri[(k + 1) % 3];
+      const int far = counterClockwise ? tri[(k + 1) % 3] : tri[(k + 2) % 3];
+      const int next = across(triangle, shared);
+      if (next < 0)
+        return false;
+      const Triangle& nt = triangles[next];
+      const Vec2 pc = corners[k], ps = corners[at(tri, shared)], pf = corners[at(tri, far)];
+      std::array<Vec2, 3> nextCorners;
+      for (int j = 0; j < 3; ++j)
+        nextCorners[j] = nt[j] == center ? pc : nt[j] == shared ? ps : Vec2(pc + ps - pf);
+      out.push_back({ next, nextCorners });
+      triangle = next;
+      corners = nextCorners;
+    }
+    return true;
+  };
+  ccw_.clear();
+  cw_.clear();
+  // From the edge on, counter-clockwise and clockwise, `valence` triangles each.
+  if (!walk(anchor, anchorCorners, edgeBehind, valence - 1, edgeBehind ? ccw_ : cw_))
+    return false;
+  std::vector<Sector>& otherWay = edgeBehind ? cw_ : ccw_;
+  std::vector<Sector> start;
+  if (!walk(anchor, anchorCorners, !edgeBehind, 1, start))
+    return false;
+  if (!walk(start[1].triangle, start[1].corners, !edgeBehind, valence - 1, otherWay))
+    return false;
+  edge_ = anchorCorners[at(first, towards)] - centre_;
+  return true;
+}
+
+bool StarUnfolding::locate(const std::vector<Sector>& chain, const BasePoint& point, Vec2& result, double& angle) const
+{
+  const std::array<double, 3> c = BaseCharts::barycentric(point);
+  const Triangle& tri = (*triangles_)[point.triangle];
+  for (std::size_t i = 0; i < chain.size(); ++i)
+  {
+    const Triangle& s = (*triangles_)[chain[i].triangle];
+    Vec2 sum = Vec2::Zero();
+    double weight = 0.0;
+    bool holds = true;
+    for (int j = 0; j < 3 && holds; ++j)
+    {
+      if (chain[i].triangle != point.triangle && std::abs(c[j]) < 1e-12)
+        continue;
+      const int k = static_cast<int>(std::find(s.begin(), s.end(), tri[j]) - s.begin());
+      if (k > 2)
+        holds = false;
+      else
+      {
+        sum += c[j] * chain[i].corners[k];
+        weight += c[j];
+      }
+    }
+    if (!holds || weight == 0.0)
+      continue;
+    result = sum / weight;
+    // Its angle from the edge: whole sectors, then from this sector's
+    // spoke on the edge's side (the edge turned by i sixths of a turn).
+    const double turn = (&chain == &ccw_ ? 1.0 : -1.0) * static_cast<double>(i) * kSixthTurn;
+    const Vec2 spoke(std::cos(turn) * edge_.x() - std::sin(turn) * edge_.y(),
+      std::sin(turn) * edge_.x() + std::cos(turn) * edge_.y());
+    const Vec2 d = result - centre_;
+    const double within = d.squaredNorm() > 0.0 ? std::abs(std::atan2(cross2(spoke, d), spoke.dot(d))) : 0.0;
+    angle = static_cast<double>(i) * kSixthTurn + within;
+    return true;
+  }
+  return false;
+}
+
+bool StarUnfolding::position(const BasePoint& point, Vec2& result) const
+{
+  if (!triangles_)
+    return false;
+  Vec2 a, b;
+  double angleA = 0.0, angleB = 0.0;
+  const bool inA = locate(ccw_, point, a, angleA), inB = locate(cw_, point, b, angleB);
+  if (!inA && !inB)
+    return false;
+  const bool useA = inA && (!inB || angleA <= angleB);
+  // More than half a turn from the edge both ways (a valence above 6):
+  // a second sheet, left out.
+  if ((useA ? angleA : angleB) > 3.0 * kSixthTurn + 1e-12)
+    return false;
+  result = useA ? a : b;
+  return true;
 }
 
 } // namespace cmp

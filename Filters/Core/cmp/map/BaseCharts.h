@@ -66,6 +66,43 @@ private:
   std::vector<std::vector<Entry>> charts_; ///< Per anchor, the triangles around it (itself first).
 };
 
+/// \brief The star of one base vertex unfolded into the frame of one of
+///        its triangles all the way round, opened half a turn from one of
+///        its edges: the chart in which a curve along that edge sees every
+///        triangle round its end as L0 has it (`BaseCharts` stops short of
+///        the triangle opposite an even valence's anchor, and each anchor
+///        opens its star elsewhere).
+class StarUnfolding
+{
+public:
+  /// \brief The star of `center`, a vertex of base triangle `anchor`, in
+  ///        `anchor`'s frame, opened opposite the edge from `center` to
+  ///        `towards` (another vertex of `anchor`); false if the star is
+  ///        not one fan.
+  bool build(const BaseDomain& domain, int anchor, int center, int towards);
+
+  /// \brief `point` in the unfolding, the way round nearer the edge;
+  ///        false if it lies outside the closed star or more than half a
+  ///        turn from the edge both ways.
+  bool position(const BasePoint& point, Vec2& result) const;
+
+private:
+  struct Sector
+  {
+    int triangle = -1;
+    std::array<Vec2, 3> corners; ///< In the triangle's vertex order.
+  };
+  /// `point` in one way round, and its angle from the edge.
+  bool locate(const std::vector<Sector>& chain, const BasePoint& point, Vec2& result, double& angle) const;
+
+  const std::vector<Triangle>* triangles_ = nullptr;
+  int center_ = -1;
+  Vec2 centre_ = Vec2::Zero(); ///< The centre in the anchor's frame.
+  Vec2 edge_ = Vec2::Zero();   ///< The edge from the centre.
+  std::vector<Sector> ccw_;    ///< The star counter-clockwise from the edge.
+  std::vector<Sector> cw_;     ///< The star clockwise from the edge.
+};
+
 /// \brief Barycentric coordinates of `p` in the 2D triangle `corners`.
 std::array<double, 3> barycentricIn(const std::array<Vec2, 3>& corners, const Vec2& p);
 

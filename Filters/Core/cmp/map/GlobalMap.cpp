@@ -1,10 +1,14 @@
 #include <cmp/map/GlobalMap.h>
 
+#include <cmp/numerics/MeanValueSystem.h>
+#include <cmp/numerics/SymmetricDirichletRelaxation.h>
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -15,6 +19,9 @@ namespace
 {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+/// Tries of one star solve, each holding more vertices, before it is skipped.
+constexpr int kStarAttempts = 3;
 /// Halvings of a vertex's step at most before it stays.
 constexpr int kBacktrackingSteps = 10;
 /// A vertex's step never exceeds this share of its shortest edge in the chart.
@@ -58,6 +65,262 @@ double triangleEnergy(const Metric& metric, const std::array<Vec2, 3>& p, double
       *gradient -= dE.col(0) + dE.col(1);
   }
   return metric.area * frobenius * (1.0 + inverse);
+}
+
+
+/// The star of one base vertex unfolded: its k triangles drawn equilateral
+/// (side `side`) one after the other round the vertex, from the spoke to
+/// ring vertex `cut` on, so that the chart is isometric to L0's except
+/// across that spoke, where it is open (a gap below valence 6, a second
+/// sheet above). A point on the open spoke has no place in the chart.
+class StarChart
+{
+public:
+  /// False if the triangles round `center` do not close into one fan.
+  bool build(const BaseDomain& domain, int center, int cut, double side)
+  {
+    center_ = center;
+    triangles_ = &domain.mesh.triangles;
+    ring_.clear();
+    sector_.clear();
+    std::vector<int> around;
+    for (int t = 0; t < domain.mesh.triangleCount(); ++t)
+      for (int k = 0; k < 3; ++k)
+        if (domain.mesh.triangles[t][k] == center)
+          around.push_back(t);
+    if (around.size() < 3)
+      return false;
+    int t = around[0];
+    for (std::size_t i = 0; i < around.size(); ++i)
+    {
+      const Triangle& tri = domain.mesh.triangles[t];
+      const int k = static_cast<int>(std::find(tri.begin(), tri.end(), center) - tri.begin());
+      ring_.push_back(tri[(k + 1) % 3]);
+      sector_.push_back(t);
+      const int next = tri[(k + 2) % 3];
+      t = -1;
+      for (int candidate : around)
+      {
+        const Triangle& c = domain.mesh.triangles[candidate];
+        const int kc = static_cast<int>(std::find(c.begin(), c.end(), center) - c.begin());
+        if (c[(kc + 1) % 3] == next)
+          t = candidate;
+      }
+      if (t < 0)
+        return false;
+    }
+    if (t != around[0])
+      return false;
+    const int k = valence();
+    std::rotate(ring_.begin(), ring_.begin() + cut % k, ring_.end());
+    std::rotate(sector_.begin(), sector_.begin() + cut % k, sector_.end());
+    legs_.resize(k + 1);
+    for (int i = 0; i <= k; ++i)
+      legs_[i] = side * Vec2(std::cos(i * kPi / 3.0), std::sin(i * kPi / 3.0));
+    return true;
+  }
+
+  int valence() const { return static_cast<int>(ring_.size()); }
+
+  /// `p` in the chart, with its angle round the centre (0 to k pi / 3);
+  /// false if it lies outside the closed star or on the open spoke. With
+  /// `inside`, whether it lies in the open star (off its rim).
+  bool position(const BasePoint& p, Vec2& q, double& angle, bool* inside = nullptr) const
+  {
+    const std::array<double, 3> c = BaseCharts::barycentric(p);
+    const Triangle& tri = (*triangles_)[p.triangle];
+    const int k = valence();
+    int found = -1;
+    double weights[3] = { 0.0, 0.0, 0.0 }; // centre, ring i, ring i + 1
+    for (int i = 0; i < k; ++i)
+    {
+      const int a = ring_[i], b = ring_[(i + 1) % k];
+      double w[3] = { 0.0, 0.0, 0.0 };
+      bool holds = true;
+      for (int j = 0; j < 3 && holds; ++j)
+      {
+        const double x = std::max(c[j], 0.0);
+        if (x < kOffStar)
+          continue;
+        if (tri[j] == center_)
+          w[0] += x;
+        else if (tri[j] == a)
+          w[1] += x;
+        else if (tri[j] == b)
+          w[2] += x;
+        else
+          holds = false;
+      }
+      if (!holds)
+        continue;
+      if (found >= 0 && !(w[1] == 0.0 && w[2] == 0.0))
+      {
+        // On the spoke between sector k - 1 and sector 0: open there.
+        if (found == 0 && i == k - 1)
+          return false;
+      }
+      if (found < 0)
+      {
+        found = i;
+        std::copy(w, w + 3, weights);
+      }
+    }
+    const double sum = weights[0] + weights[1] + weights[2];
+    if (found < 0 || !(sum > 0.0))
+      return false;
+    q = (weights[1] * legs_[found] + weights[2] * legs_[found + 1]) / sum;
+    angle = (found + (weights[1] + weights[2] > 0.0 ? weights[2] / (weights[1] + weights[2]) : 0.5)) * kPi / 3.0;
+    if (inside)
+      *inside = weights[0] / sum > kOffStar;
+    return true;
+  }
+
+  /// The base point at chart point `q`, on the sheet nearest to `angle`.
+  BasePoint point(const Vec2& q, double angle) const
+  {
+    const int k = valence();
+    double theta = std::atan2(q.y(), q.x());
+    theta += 2.0 * kPi * std::round((angle - theta) / (2.0 * kPi));
+    const int i = std::clamp(static_cast<int>(std::floor(theta / (kPi / 3.0))), 0, k - 1);
+    Eigen::Matrix2d legs;
+    legs.col(0) = legs_[i];
+    legs.col(1) = legs_[i + 1];
+    const Vec2 ab = legs.inverse() * q;
+    const double a = std::max(ab.x(), 0.0), b = std::max(ab.y(), 0.0);
+    const double centre = std::max(1.0 - a - b, 0.0), sum = centre + a + b;
+    const Triangle& tri = (*triangles_)[sector_[i]];
+    std::array<double, 3> c{ 0.0, 0.0, 0.0 };
+    for (int j = 0; j < 3; ++j)
+      c[j] = tri[j] == center_ ? centre / sum : tri[j] == ring_[i] ? a / sum : b / sum;
+    return BaseCharts::fromBarycentric(sector_[i], c);
+  }
+
+private:
+  /// Barycentric weights below this count as none (a point on the rim).
+  static constexpr double kOffStar = 1e-10;
+  int center_ = -1;
+  const std::vector<Triangle>* triangles_ = nullptr;
+  std::vector<int> ring_;   ///< Base vertices round the centre, counter-clockwise from the cut.
+  std::vector<int> sector_; ///< Base triangle (centre, ring i, ring i + 1).
+  std::vector<Vec2> legs_;  ///< Chart place of ring vertex i (k + 1 of them: the cut's twice).
+};
+
+/// One star's solve: the surface vertices whose whole ring lies in the
+/// star of base vertex `center` (the landmarks aside, and away from the
+/// spoke to ring vertex `cut`) relaxed together in its chart, the rest
+/// held; returns the number of vertices moved.
+int relaxStar(const TracedNet& net, const BaseDomain& domain, int center, int cut, double side,
+  const std::vector<char>& pinned, const SymmetricDirichletOptions& options, const std::function<bool(int)>& valid,
+  std::vector<BasePoint>& points)
+{
+  StarChart chart;
+  if (!chart.build(domain, center, cut, side))
+    return 0;
+  const EditableMesh& mesh = net.mesh;
+  const int n = mesh.vertexCount();
+  std::vector<Vec2> q(n);
+  std::vector<double> angle(n, 0.0);
+  std::vector<char> inStar(n, 0), inside(n, 0), free(n, 0);
+  for (int v = 0; v < n; ++v)
+  {
+    bool open = false;
+    inStar[v] = chart.position(points[v], q[v], angle[v], &open) ? 1 : 0;
+    inside[v] = open ? 1 : 0;
+  }
+  std::vector<char> held(n, 0);
+  std::vector<int> triangles;
+  for (int attempt = 0; attempt < kStarAttempts; ++attempt)
+  {
+    for (int v = 0; v < n; ++v)
+    {
+      free[v] = 0;
+      if (pinned[v] || !inside[v] || held[v])
+        continue;
+      bool ring = true;
+      const int first = mesh.outgoing(v);
+      int h = first;
+      do
+      {
+        ring = inStar[mesh.to(h)] != 0;
+        h = mesh.nextAroundVertex(h);
+      } while (ring && h != first);
+      free[v] = ring ? 1 : 0;
+    }
+    // A triangle across the open spoke (its corners more than half a turn
+    // apart round the centre), or one the chart shows flipped or flat, holds
+    // its corners.
+    triangles.clear();
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      const Triangle& tri = mesh.triangle(t);
+      if (!free[tri[0]] && !free[tri[1]] && !free[tri[2]])
+        continue;
+      double lowest = kInfinity, highest = -kInfinity;
+      for (int v : tri)
+        if (q[v].squaredNorm() > 0.0) // the centre has no angle
+        {
+          lowest = std::min(lowest, angle[v]);
+          highest = std::max(highest, angle[v]);
+        }
+      if (highest - lowest > kPi || !(cross2(q[tri[1]] - q[tri[0]], q[tri[2]] - q[tri[0]]) > 0.0))
+        for (int v : tri)
+          free[v] = 0;
+    }
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      const Triangle& tri = mesh.triangle(t);
+      if (free[tri[0]] || free[tri[1]] || free[tri[2]])
+        triangles.push_back(t);
+    }
+    if (triangles.empty())
+      return 0;
+    std::vector<int> local(n, -1), global;
+    const TriangleMesh piece = extractTriangles(mesh, triangles, local, global);
+    Eigen::MatrixXd plane(piece.vertexCount(), 2);
+    std::vector<char> fixed(piece.vertexCount(), 1);
+    for (int i = 0; i < piece.vertexCount(); ++i)
+    {
+      plane.row(i) = q[global[i]].transpose();
+      fixed[i] = free[global[i]] ? 0 : 1;
+    }
+    if (!relaxSymmetricDirichlet(piece, fixed, plane, options).ok())
+      return 0;
+    int moved = 0;
+    std::vector<BasePoint> before(piece.vertexCount());
+    for (int i = 0; i < piece.vertexCount(); ++i)
+      if (!fixed[i])
+      {
+        before[i] = points[global[i]];
+        points[global[i]] = chart.point(plane.row(i).transpose(), angle[global[i]]);
+        ++moved;
+      }
+    // The chart is L0's own but for the open spoke and a triangle round the
+    // centre may end wider than L0's charts take: such triangles, checked in
+    // L0's charts, hold their corners and their corners' rings for another
+    // try.
+    std::vector<int> bad;
+    for (int t : triangles)
+      if (!valid(t))
+        bad.push_back(t);
+    if (bad.empty())
+      return moved;
+    for (int i = 0; i < piece.vertexCount(); ++i)
+      if (!fixed[i])
+        points[global[i]] = before[i];
+    for (int t : bad)
+      for (int v : mesh.triangle(t))
+      {
+        held[v] = 1;
+        const int first = mesh.outgoing(v);
+        int h = first;
+        do
+        {
+          held[mesh.to(h)] = 1;
+          h = mesh.nextAroundVertex(h);
+        } while (h != first);
+      }
+  }
+  return 0;
 }
 
 class Optimizer
@@ -130,6 +393,34 @@ public:
           { pinned_[tri[0]] != 0, pinned_[tri[1]] != 0, pinned_[tri[2]] != 0 }, p))
       return kInfinity;
     return triangleEnergy(metrics_[t], p, side_);
+  }
+
+  /// Whether triangle t keeps its orientation in every chart of its
+  /// corners' base triangles that holds all three (so that every later
+  /// step, which may read it in any of them, sees it unflipped), and has
+  /// a finite energy.
+  bool consistent(int t) const
+  {
+    if (!std::isfinite(energy(t)))
+      return false;
+    const Triangle& tri = mesh_.triangle(t);
+    const int home = points_[tri[0]].triangle;
+    if (!pinned_[tri[0]] && !pinned_[tri[1]] && !pinned_[tri[2]] && points_[tri[1]].triangle == home &&
+      points_[tri[2]].triangle == home)
+      return true; // inside one base triangle: one shape in every chart
+    // The chart of each corner's triangle: the cut reads the triangle in
+    // one of them.
+    for (int v : tri)
+    {
+      const int anchor = points_[v].triangle;
+      std::array<Vec2, 3> p;
+      bool charted = true;
+      for (int k = 0; k < 3 && charted; ++k)
+        charted = charts_.inFrame(anchor, points_[tri[k]], p[k]);
+      if (charted && !(cross2(p[1] - p[0], p[2] - p[0]) > 0.0))
+        return false;
+    }
+    return true;
   }
 
   double totalEnergy() const
@@ -294,6 +585,138 @@ private:
   std::vector<int> candidates_;
 };
 
+
+/// Unflips the triangles the cut's rounding left flipped in the map
+/// `map` of the cut net `net`: in each patch that has some, the vertices off
+/// the curves within a few rings of them are placed anew by mean value
+/// weights, the rest held, the rings widened until no triangle of the patch
+/// is flipped (the whole patch at worst: a convex boundary, so Floater's
+/// map is bijective). Returns false if a patch cannot be solved.
+bool unflipPatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& map)
+{
+  if (map.flippedTriangles == 0)
+    return true;
+  const EditableMesh& mesh = net.mesh;
+  const int patchCount = domain.mesh.triangleCount();
+  std::vector<std::vector<int>> trianglesOf(patchCount);
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    trianglesOf[net.patchOfTriangle[t]].push_back(t);
+  std::vector<char> onCurve(mesh.vertexCount(), 0);
+  for (const auto& curve : net.curves)
+    for (int v : curve)
+      onCurve[v] = 1;
+  std::vector<int> local(mesh.vertexCount(), -1);
+  for (int patch = 0; patch < patchCount; ++patch)
+  {
+    std::vector<int> global;
+    const TriangleMesh piece = extractTriangles(mesh, trianglesOf[patch], local, global);
+    const int m = piece.vertexCount();
+    Eigen::MatrixXd values(m, 2);
+    for (int i = 0; i < m; ++i)
+    {
+      std::array<double, 3> c;
+      if (!coordinatesInTriangle(domain, map.baseTriangle[global[i]], map.baseCoordinates[global[i]], patch, c))
+        return false;
+      values.row(i) << c[1], c[2];
+    }
+    for (int v : global)
+      local[v] = -1;
+    const auto flipped = [&](const Eigen::MatrixXd& x) {
+      std::vector<int> result;
+      for (int t = 0; t < piece.triangleCount(); ++t)
+      {
+        const Triangle& tri = piece.triangles[t];
+        const Vec2 a = x.row(tri[1]) - x.row(tri[0]), b = x.row(tri[2]) - x.row(tri[0]);
+        if (!(cross2(a, b) > 0.0))
+          result.push_back(t);
+      }
+      return result;
+    };
+    const std::vector<int> bad = flipped(values);
+    if (bad.empty())
+      continue;
+    std::vector<std::vector<int>> neighbours(m);
+    for (const Triangle& tri : piece.triangles)
+      for (int k = 0; k < 3; ++k)
+        neighbours[tri[k]].push_back(tri[(k + 1) % 3]);
+    std::vector<int> distance(m, -1), queue;
+    for (int t : bad)
+      for (int v : piece.triangles[t])
+        if (distance[v] < 0)
+        {
+          distance[v] = 0;
+          queue.push_back(v);
+        }
+    for (std::size_t i = 0; i < queue.size(); ++i)
+      for (int u : neighbours[queue[i]])
+        if (distance[u] < 0)
+        {
+          distance[u] = distance[queue[i]] + 1;
+          queue.push_back(u);
+        }
+    const Eigen::SparseMatrix<double> weights = meanValueWeights(piece);
+    bool solved = false;
+    for (int rings = 2; !solved; rings *= 2)
+    {
+      const bool whole = rings > m;
+      std::vector<int> fixedRow(m, -1);
+      Eigen::MatrixXd fixedValues(m, 2);
+      int fixedCount = 0;
+      for (int i = 0; i < m; ++i)
+        if (onCurve[global[i]] || (!whole && (distance[i] < 0 || distance[i] > rings)))
+        {
+          fixedRow[i] = fixedCount;
+          fixedValues.row(fixedCount++) = values.row(i);
+        }
+      Eigen::MatrixXd solution;
+      if (!solveConvexCombinationSystem(weights, fixedRow, fixedValues.topRows(fixedCount), solution).ok())
+      {
+        if (whole)
+          return false;
+        continue;
+      }
+      if (flipped(solution).empty() || whole)
+      {
+        if (!flipped(solution).empty())
+          return false;
+        // The freed vertices relaxed towards an isometry from there (the
+        // mean value map crowds a protrusion the map had given room).
+        double area = 0.0;
+        for (int t = 0; t < piece.triangleCount(); ++t)
+          area += triangleArea(piece, t);
+        if (area > 0.0)
+        {
+          const double side = std::sqrt(4.0 * area / std::sqrt(3.0));
+          Eigen::Matrix2d frame;
+          frame << side, 0.5 * side, 0.0, 0.5 * std::sqrt(3.0) * side;
+          Eigen::MatrixXd plane = solution * frame.transpose();
+          std::vector<char> fixed(m, 0);
+          for (int i = 0; i < m; ++i)
+            fixed[i] = fixedRow[i] >= 0 ? 1 : 0;
+          if (relaxSymmetricDirichlet(piece, fixed, plane).ok())
+          {
+            Eigen::MatrixXd relaxed = plane * frame.transpose().inverse();
+            for (int i = 0; i < m; ++i)
+              if (fixedRow[i] >= 0)
+                relaxed.row(i) = solution.row(i);
+            if (relaxed.allFinite() && flipped(relaxed).empty())
+              solution.swap(relaxed);
+          }
+        }
+        for (int i = 0; i < m; ++i)
+          if (fixedRow[i] < 0)
+          {
+            const int v = global[i];
+            map.baseTriangle[v] = patch; // off the curves: in this patch alone
+            map.baseCoordinates[v] = { 1.0 - solution(i, 0) - solution(i, 1), solution(i, 0), solution(i, 1) };
+          }
+        solved = true;
+      }
+    }
+  }
+  map.flippedTriangles = 0;
+  return true;
+}
 } // namespace
 
 Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const BaseCharts& charts,
@@ -326,6 +749,26 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
   if (!std::isfinite(energy))
     return Status::error("global map: the starting map has a flipped or crushed triangle");
   result.distortionBefore = energy / (4.0 * area);
+  {
+    std::vector<char> pinned(n, 0);
+    for (int v : net.landmarkVertex)
+      pinned[v] = 1;
+    SymmetricDirichletOptions relax;
+    relax.maximumIterations = options.starIterations;
+    const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * baseTriangles));
+    for (int round = 0; round < options.starRounds; ++round)
+    {
+      for (int b = 0; b < domain.mesh.vertexCount(); ++b)
+        relaxStar(net, domain, b, round, side, pinned, relax,
+          [&](int t) { return optimizer.consistent(t); }, start);
+      const double next = optimizer.totalEnergy();
+      ++result.starRounds;
+      const bool settled = !(energy - next > options.leastRelativeGain * energy);
+      energy = next;
+      if (settled)
+        break;
+    }
+  }
   for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
   {
     int moved = 0;
@@ -373,7 +816,9 @@ Status freeCurves(const StraightenedNet& straight, const BaseDomain& domain, con
   StraightenedNet cut;
   PatchParameterization cutMap;
   Status s = cutAlongMap(straight, domain, charts, points, cut, cutMap);
-  if (s.ok())
+  // The map's own places, the cut's rounding unflipped; where that fails,
+  // every patch parameterized anew on the new curves.
+  if (s.ok() && !unflipPatches(cut.net, domain, cutMap))
     s = parameterizePatches(cut.net, domain, cutMap, options);
   if (s.ok() && cutMap.flippedTriangles > 0)
     s = Status::error(std::to_string(cutMap.flippedTriangles) + " triangles flip in the new patch maps");

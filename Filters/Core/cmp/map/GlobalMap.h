@@ -28,12 +28,19 @@ struct GlobalMapOptions
   /// \brief A sweep that lowers the energy by less than this fraction ends
   ///        the optimization.
   double leastRelativeGain = 1e-4;
+  /// \brief Rounds of star solves at most (before the sweeps); a round
+  ///        that lowers the energy by less than `leastRelativeGain` ends
+  ///        them.
+  int starRounds = 4;
+  /// \brief SLIM steps per star solve at most.
+  int starIterations = 50;
 };
 
 /// \brief What `optimizeGlobalMap()` did.
 struct GlobalMapReport
 {
   int sweeps = 0;             ///< Sweeps made.
+  int starRounds = 0;         ///< Rounds of star solves made.
   double distortionBefore = 0.0; ///< Area-weighted mean symmetric Dirichlet energy over its isometric value (1 best), before.
   double distortionAfter = 0.0;  ///< The same after.
   double maximumDistortion = 0.0; ///< The largest per-triangle value after.
@@ -49,9 +56,20 @@ struct GlobalMapReport
 /// Energy: sum over surface triangles of area x (|J|^2 + |J^-1|^2), J the
 /// map's differential, measured in a chart of the base triangles around
 /// the triangle's corners (`BaseCharts`): infinite for a triangle flipped
-/// or crushed, so every accepted move keeps the map bijective. Moves: each
-/// free vertex in turn, down its energy's gradient with a Newton step
-/// length along it, halved until its triangles' energy falls.
+/// or crushed, so every accepted move keeps the map bijective.
+///
+/// Moves, in two phases:
+/// - star solves (Praun and Hoppe 2003, Schreiner et al. 2004, with SLIM
+///   steps for each star): `starRounds` rounds over the base vertices;
+///   each relaxes together every vertex whose ring lies in that vertex's
+///   star, in the star unfolded flat round it (opened along one spoke,
+///   another each round), the rest held. Global per star, so a squeezed
+///   protrusion (a tail) gets room in one solve. A solve that leaves a
+///   triangle flipped in one of its corners' charts is tried again with
+///   those vertices held, then skipped;
+/// - then Gauss-Seidel sweeps: each free vertex in turn, down its energy's
+///   gradient with a Newton step length along it, halved until its
+///   triangles' energy falls.
 ///
 /// \pre `map` is bijective on every patch (no flipped triangle).
 /// Fails, naming the problem, if sizes disagree or a triangle of the
@@ -71,8 +89,12 @@ struct FreeCurvesReport
 /// \brief The straightened net with its curves moved where one
 ///        low-distortion map of the whole surface puts L0's edges:
 ///        `optimizeGlobalMap()` from the patch maps `map`, then
-///        `cutAlongMap()`, then every patch parameterized anew on its new
-///        curves (`parameterizePatches()` with `options`). Where the cut
+///        `cutAlongMap()`; the patch maps are the global map's own places,
+///        with any triangle the cut's rounding flipped placed anew among
+///        its neighbours (mean value weights a few rings round it, then a
+///        symmetric Dirichlet relaxation of those vertices). Only if that
+///        fails is every patch parameterized anew on its new curves
+///        (`parameterizePatches()` with `options`). Where the cut
 ///        would not give an equivalent layout or a patch map flips, `out`
 ///        and `outMap` are `straight` and `map` unchanged and the report
 ///        says why (never an invalid layout).

@@ -189,10 +189,17 @@ public:
       // edge away, so laid the one way): the rhombus and all round it.
       const int right = net_.rightTriangle[e];
       const std::array<Vec2, 3>* rightCorners = charts.corners(left, right);
+      // Round either end, its whole star opened half a turn from the edge,
+      // so that triangles across the edge near its ends read as L0 has
+      // them (the left triangle's own charts open it elsewhere).
+      StarUnfolding aroundA, aroundB;
+      const bool starA = aroundA.build(domain_, left, a, b), starB = aroundB.build(domain_, left, b, a);
       for (int v = 0; v < mesh.vertexCount(); ++v)
       {
         Vec2 inRight;
-        if (charts.inFrame(left, points_[v], uv_[v]))
+        if ((starA && aroundA.position(points_[v], uv_[v])) || (starB && aroundB.position(points_[v], uv_[v])))
+          charted[v] = 1;
+        else if (charts.inFrame(left, points_[v], uv_[v]))
           charted[v] = 1;
         else if (rightCorners && charts.inFrame(right, points_[v], inRight))
         {
