@@ -50,11 +50,11 @@ def parse_arguments(argv):
                         help="lower the stretch of every patch's map (Net Straightener's LowerStretch): parts "
                         "without landmarks, such as ears and tails, get more remesh vertices, at the price of more "
                         "folded remesh triangles elsewhere")
-    parser.add_argument("--free-curves", action="store_true",
+    parser.add_argument("--free-curves", action=argparse.BooleanOptionalAction, default=True,
                         help="move the curves where one low-distortion map of the whole surface onto L0 puts its "
-                        "edges (Net Straightener's FreeCurves): only the landmarks stay; with --lower-stretch it can "
-                        "bring remeshes closer to tails and horns (not on every L0), at about 3 s per model and "
-                        "more folded remesh triangles")
+                        "edges (Net Straightener's FreeCurves, on by default): only the landmarks stay, and tails, "
+                        "ears and horns get room fixed curves deny them; --no-free-curves keeps the paper's "
+                        "straightened curves, several times faster but far from such parts")
     parser.add_argument("--no-fold-repair", action="store_true",
                         help="keep every remesh vertex exactly where its model's parameterization puts it (the "
                         "Semi-Regular Remesher's RepairFolds off): by default the vertices of remesh triangles "

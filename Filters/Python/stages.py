@@ -143,7 +143,7 @@ def trace_net(model, domain, output_folder):
     return surface
 
 
-def straighten_net(model, domain, traced, output_folder, lower_stretch=False, free_curves=False):
+def straighten_net(model, domain, traced, output_folder, lower_stretch=False, free_curves=True):
     """NetStraightener on the tracer's surface: writes NAME.param.vtp (the
     re-triangulated surface with PatchId, BaseTriangle and BaseCoordinates)
     and NAME.straight-curves.vtp (the straightened curves). With

@@ -175,7 +175,10 @@ def distance_summary(model, report):
         line += ", %.1f%% of the diagonal from landmark %d" % (
             100.0 * remesh.get("hausdorff_landmark_distance_per_diagonal", 0.0), landmark)
     remedies = ["a landmark there"] if missed else []
-    if not model.report.get("straighten", {}).get("lower_stretch", False):
+    straighten = model.report.get("straighten", {})
+    # With free curves the patch maps are the global map's own, and a
+    # lower-stretch start can lose a tail (known issues): not offered then.
+    if not straighten.get("lower_stretch", False) and not straighten.get("free_curves", False):
         remedies.append("--lower-stretch")
     settings = report.get("remesh", {})
     tolerance = settings.get("adaptive_tolerance") or 0.0

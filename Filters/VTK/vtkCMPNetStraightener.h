@@ -84,14 +84,15 @@ public:
   vtkBooleanMacro(LowerStretch, bool);
 
   /// \brief Move the curves where one low-distortion map of the whole
-  ///        surface onto L0 puts its edges (default off; `cmp::freeCurves()`):
+  ///        surface onto L0 puts its edges (default on; `cmp::freeCurves()`):
   ///        after straightening, every vertex but the landmarks may cross the
   ///        curves to lower the map's symmetric Dirichlet energy against
   ///        equilateral base triangles of equal area, then the surface is cut
-  ///        anew along the map's preimages of L0's edges and every patch is
-  ///        parameterized again (with LowerStretch as set). Where that would
-  ///        not give an equivalent layout, the straightened net is kept with
-  ///        a warning. Field arrays `FreeCurvesApplied`, `MapDistortionBefore`,
+  ///        anew along the map's preimages of L0's edges and the patch maps
+  ///        are the global map's own places. Where that would not give an
+  ///        equivalent layout, the straightened net is kept with a warning.
+  ///        Off, the paper's fixed straightened curves and per-patch maps.
+  ///        Field arrays `FreeCurvesApplied`, `MapDistortionBefore`,
   ///        `MapDistortionAfter`, `MapSweeps`, `MapCrossingVertices`. Measured
   ///        figures are in Documentation/filters/NetStraightener.md.
   vtkSetMacro(FreeCurves, bool);
@@ -120,6 +121,6 @@ private:
   double Tolerance = 0.002;
   double SnapTolerance = 0.1;
   bool LowerStretch = false;
-  bool FreeCurves = false;
+  bool FreeCurves = true;
   int MapSweeps = 200;
 };

@@ -104,7 +104,7 @@ std::string examplesDir()
   return CMP_EXAMPLES_DIR;
 }
 
-vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0)
+vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0, bool freeCurves)
 {
   vtkNew<vtkCMPFeatureNetTracer> tracer;
   tracer->SetInputData(0, surface);
@@ -112,6 +112,7 @@ vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0
   vtkNew<vtkCMPNetStraightener> straightener;
   straightener->SetInputConnection(0, tracer->GetOutputPort(0));
   straightener->SetInputData(1, l0);
+  straightener->SetFreeCurves(freeCurves);
   const RunResult result = run(straightener);
   EXPECT_TRUE(result.succeeded) << result.error;
   return straightener->GetOutput(0);

@@ -64,8 +64,9 @@ vtkSmartPointer<vtkPolyData> tetrahedronBaseDomain(const std::string& fileName);
 
 /// \brief `surface` traced against `l0` and straightened (a test failure
 ///        if either fails): the input of the filters that read a
-///        parameterization.
-vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0);
+///        parameterization. `freeCurves` is the straightener's FreeCurves
+///        (its default, on; off: the paper's fixed curves).
+vtkSmartPointer<vtkPolyData> parameterized(vtkPolyData* surface, vtkPolyData* l0, bool freeCurves = true);
 
 /// \brief The three shipped examples (blob, capsule, peanut) traced and
 ///        straightened against `l0`, as one multiblock with blocks named

@@ -550,7 +550,9 @@ TEST(SemiRegularRemesherFilter, RepairFoldsUnfoldsMostOfSpotsFoldsAndCanBeTurned
     baseDomainOf(readLandmarked(folder + "shrec07-fourleg/381.off", folder + "shrec07-fourleg/381.vts"));
   vtkSmartPointer<vtkPolyData> spot = readLandmarked(folder + "spot/spot.obj", folder + "spot/spot_shrec07.pinned");
   addProbeArrays(spot);
-  vtkSmartPointer<vtkPolyData> input = parameterized(spot, l0);
+  // The paper's fixed curves: their bunched corners give the repair the
+  // most to do (with the default free curves Spot has far fewer folds).
+  vtkSmartPointer<vtkPolyData> input = parameterized(spot, l0, /*freeCurves=*/false);
   vtkNew<vtkCMPSemiRegularRemesher> remesher;
   EXPECT_TRUE(remesher->GetRepairFolds());
   remesher->SetLevel(5);

@@ -194,7 +194,10 @@ def check_straightened(out, name, model, landmarks=21, flips_allowed=False):
         check(key in figures, "%s: straighten has no %s: %r" % (name, key, figures))
     check(figures["net_valid"] is True, name + ": straightened net not valid")
     check(figures["sweeps"] >= 1, name + ": no sweep ran")
-    check(0 < figures["net_length_after"] <= 1.02 * figures["net_length_before"],
+    # Straightening shortens the traced net; free curves follow the map,
+    # not shortest paths (measured up to 6.2% longer than traced).
+    limit = 1.07 if figures.get("free_curves") else 1.02
+    check(0 < figures["net_length_after"] <= limit * figures["net_length_before"],
           name + ": net length %s -> %s" % (figures["net_length_before"], figures["net_length_after"]))
     check(figures["area_variation_before"] >= 0 and figures["area_variation_after"] >= 0, name + ": area variation")
     check(45.0 <= figures["widest_curve_gap_degrees"] < 360.0 and 0 <= figures["widest_curve_gap_landmark"] < landmarks,
@@ -337,7 +340,10 @@ def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0
             # remeshes, refinement unless already as fine as 0.007 (and not
             # with detail transfer, which needs a uniform remesh).
             relaxed = bool(collection.get("sample_relaxation_rounds"))
-            stretched = report["models"][name]["straighten"]["lower_stretch"]
+            straighten = report["models"][name]["straighten"]
+            # --lower-stretch only on the fixed curves (with free curves it
+            # can lose a tail).
+            stretched = straighten["lower_stretch"] or straighten["free_curves"]
             check_equal(("--lower-stretch" in lines[0], "--relax-samples 4" in lines[0],
                          "--adaptive-tolerance 0.007" in lines[0]),
                         (not stretched, not adaptive and not relaxed,
@@ -879,8 +885,10 @@ def case_lower_stretch(tmp):
     figures = {}
     for flag in ([], ["--lower-stretch"]):
         out = os.path.join(tmp, "out" + "".join(flag))
+        # On the paper's fixed curves, where LowerStretch shapes the patch maps.
         status, stdout, stderr, report = run_cli(
-            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "5", "--no-render"] + flag, out)
+            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "5", "--no-render", "--no-free-curves"]
+            + flag, out)
         check_equal(status, 0, "exit status %s (stderr: %s)" % (flag, stderr))
         check_remeshed(out, report, stdout, ["381", "387"], 5)
         model = report["models"]["381"]
@@ -895,23 +903,23 @@ def case_lower_stretch(tmp):
 
 
 def case_free_curves(tmp):
-    """--free-curves: every model's curves are moved by the whole-surface
-    map (report.json says so, with the map's figures), the remeshes still
-    share one connectivity; without the flag the report says it was off."""
+    """Free curves by default: every model's curves are moved by the
+    whole-surface map (report.json says so, with the map's figures), the
+    remeshes still share one connectivity; --no-free-curves turns it off and
+    the report says so."""
     pairs = [(shrec("381", "off"), shrec("381", "vts")), (shrec("387", "off"), shrec("387", "vts"))]
-    for flag in ([], ["--free-curves"]):
+    for flag in (["--no-free-curves"], []):
         out = os.path.join(tmp, "out" + "".join(flag))
         status, stdout, stderr, report = run_cli(
-            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--lower-stretch", "--no-render"]
-            + flag, out)
+            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--no-render"] + flag, out)
         check_equal(status, 0, "exit status %s (stderr: %s)" % (flag, stderr))
         check_remeshed(out, report, stdout, ["381", "387"], 3)
         for name in ("381", "387"):
             straighten = report["models"][name]["straighten"]
-            check_equal(straighten["free_curves"], bool(flag), name + ": free_curves")
+            check_equal(straighten["free_curves"], not flag, name + ": free_curves")
             check_equal(straighten["flipped_triangles"], 0, name + ": flipped triangles " + str(flag))
-            if not flag:
-                check("map" not in straighten, name + ": map figures without --free-curves")
+            if flag:
+                check("map" not in straighten, name + ": map figures with --no-free-curves")
                 continue
             figures = straighten["map"]
             check(figures["applied"], name + ": the curves were not moved")
@@ -934,8 +942,10 @@ def case_relax_samples(tmp):
     results = {}
     for flag in ([], ["--relax-samples", "4"]):
         out = os.path.join(tmp, "out" + "".join(flag))
+        # On the fixed curves, where 389's legs are crowded most.
         status, stdout, stderr, report = run_cli(
-            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "5", "--no-render"] + flag, out)
+            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "5", "--no-render", "--no-free-curves"]
+            + flag, out)
         check_equal(status, 0, "exit status %s (stderr: %s)" % (flag, stderr))
         check_remeshed(out, report, stdout, ["381", "389"], 5)
         check_equal(report["remesh"]["sample_relaxation_rounds"], 4 if flag else 0, "relaxation rounds %s" % flag)
@@ -975,8 +985,11 @@ def case_fold_repair(tmp):
     figures, printed, reports = {}, {}, {}
     for flag in ([], ["--no-fold-repair"]):
         out = os.path.join(tmp, "out" + "".join(flag))
+        # The paper's fixed curves, whose bunched corners give the repair the
+        # most to do.
         status, stdout, stderr, report = run_cli(
-            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "5", "--no-render"] + flag, out)
+            model_arguments(pairs) + ["--base-domain-from", "0", "--level", "5", "--no-render", "--no-free-curves"]
+            + flag, out)
         check_equal(status, 0, "exit status %s (stderr: %s)" % (flag, stderr))
         figures[bool(flag)] = report["models"]["spot"]["remesh"]
         printed[bool(flag)] = stdout

@@ -24,7 +24,11 @@ def check_block(surface, curves, original_points, what):
     check_equal(field(surface, "SkippedStars"), 0, what + ": SkippedStars")
     check(field(surface, "Sweeps") >= 1, what + ": no sweep ran")
     before, after = field(surface, "NetLengthBefore"), field(surface, "NetLengthAfter")
-    check(0 < after <= 1.02 * before, what + ": net length %.3f -> %.3f" % (before, after))
+    # Free curves (the default) follow the map, not shortest paths: measured
+    # up to 6.2% longer than traced; the fixed curves are shortened.
+    applied = surface.GetFieldData().GetArray("FreeCurvesApplied")
+    limit = 1.07 if applied is not None and applied.GetValue(0) else 1.02
+    check(0 < after <= limit * before, what + ": net length %.3f -> %.3f" % (before, after))
     check(10.0 < field(surface, "NetLengthPerSqrtAreaAfter") < 24.0, what + ": NetLengthPerSqrtAreaAfter")
     check(surface.GetNumberOfPoints() > original_points, what + ": no points were added")
 
@@ -84,7 +88,10 @@ def main():
                     "block %d (%s)" % (block, model))
     length = field(surfaces.GetBlock(0), "NetLengthAfter")
 
-    # No sweeps: the curves stay as traced, only edges between curves are split.
+    # No sweeps and the fixed curves: the curves stay as traced, only edges
+    # between curves are split.
+    check_equal(straightener.FreeCurves, 1, "FreeCurves default")
+    straightener.FreeCurves = 0
     straightener.MaximumSweeps = 0
     straightener.UpdatePipeline()
     unswept = servermanager.Fetch(straightener, idx=0).GetBlock(0)
@@ -94,8 +101,11 @@ def main():
     check_equal(field(unswept, "NetValid"), 1, "MaximumSweeps 0: NetValid")
     straightener.MaximumSweeps = 5
 
-    # LowerStretch: the same cut surfaces, every patch map less crowded.
-    crowding = [field(surfaces.GetBlock(b), "SmallestAreaRatio") for b in range(len(models))]
+    # LowerStretch on the fixed curves: the same cut surfaces, every patch
+    # map less crowded.
+    straightener.UpdatePipeline()
+    fixed = servermanager.Fetch(straightener, idx=0)
+    crowding = [field(fixed.GetBlock(b), "SmallestAreaRatio") for b in range(len(models))]
     straightener.LowerStretch = 1
     straightener.UpdatePipeline()
     lowered = servermanager.Fetch(straightener, idx=0)
@@ -104,13 +114,14 @@ def main():
         surface = lowered.GetBlock(block)
         check_block(surface, lowered_curves.GetBlock(block), traced.GetBlock(block).GetNumberOfPoints(),
                     "LowerStretch: block %d (%s)" % (block, model))
-        check_equal(surface.GetNumberOfPoints(), surfaces.GetBlock(block).GetNumberOfPoints(),
+        check_equal(surface.GetNumberOfPoints(), fixed.GetBlock(block).GetNumberOfPoints(),
                     "LowerStretch: points of %s" % model)
         spread = field(surface, "SmallestAreaRatio")
         check(spread > crowding[block], "LowerStretch: smallest area ratio of %s %g, without %g"
               % (model, spread, crowding[block]))
         print("LowerStretch: %s smallest area ratio %g -> %g" % (model, crowding[block], spread))
     straightener.LowerStretch = 0
+    straightener.FreeCurves = 1
 
     # Bad input: reported by the filter, no output.
     def expect_failure(proxy, fragment, what):
