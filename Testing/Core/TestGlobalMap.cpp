@@ -36,6 +36,24 @@ Straightened straightened381()
   return s;
 }
 
+/// `straightened381()`'s map optimized by `optimizeGlobalMap()` with
+/// `options` (a test failure if it fails).
+struct Optimized
+{
+  Straightened s;
+  BaseCharts charts;
+  std::vector<BasePoint> points;
+  GlobalMapReport report;
+};
+
+Optimized optimized381(const GlobalMapOptions& options)
+{
+  Optimized o{ straightened381(), {}, {}, {} };
+  o.charts.build(o.s.domain);
+  EXPECT_TRUE(optimizeGlobalMap(o.s.straight.net, o.s.domain, o.charts, o.s.map, o.points, options, &o.report).ok());
+  return o;
+}
+
 std::vector<BasePoint> pointsOf(const PatchParameterization& map)
 {
   std::vector<BasePoint> points;
@@ -138,15 +156,11 @@ TEST(StarUnfolding, LaysEveryStarFlatRoundItsVertexAsL0HasItNearTheEdge)
 TEST(GlobalMap, StarSolvesAloneHalveTheDistortionOfARealModelsMapAndKeepItBijective)
 {
   CMP_REQUIRE_SHARED_DATA();
-  const Straightened s = straightened381();
-  BaseCharts charts;
-  charts.build(s.domain);
-  std::vector<BasePoint> points;
   GlobalMapOptions options;
   options.maximumSweeps = 0; // the star solves only
   options.starRounds = 1;
-  GlobalMapReport report;
-  ASSERT_TRUE(optimizeGlobalMap(s.straight.net, s.domain, charts, s.map, points, options, &report).ok());
+  const Optimized o = optimized381(options);
+  const GlobalMapReport& report = o.report;
   EXPECT_EQ(report.starRounds, 1);
   EXPECT_EQ(report.sweeps, 0);
   EXPECT_LT(report.distortionAfter, 0.5 * report.distortionBefore);
@@ -155,21 +169,19 @@ TEST(GlobalMap, StarSolvesAloneHalveTheDistortionOfARealModelsMapAndKeepItBiject
   // The map still cuts into an equivalent layout.
   StraightenedNet cut;
   PatchParameterization cutMap;
-  EXPECT_TRUE(cutAlongMap(s.straight, s.domain, charts, points, cut, cutMap).ok());
+  EXPECT_TRUE(cutAlongMap(o.s.straight, o.s.domain, o.charts, o.points, cut, cutMap).ok());
 }
 
 TEST(GlobalMap, LowersTheDistortionOfARealModelsMapAndKeepsItBijective)
 {
   CMP_REQUIRE_SHARED_DATA();
-  const Straightened s = straightened381();
-  BaseCharts charts;
-  charts.build(s.domain);
-  std::vector<BasePoint> points;
   GlobalMapOptions options;
   options.maximumSweeps = 10;
   options.leastRelativeGain = 0.0; // every sweep
-  GlobalMapReport report;
-  ASSERT_TRUE(optimizeGlobalMap(s.straight.net, s.domain, charts, s.map, points, options, &report).ok());
+  Optimized o = optimized381(options);
+  const Straightened& s = o.s;
+  const GlobalMapReport& report = o.report;
+  std::vector<BasePoint>& points = o.points;
   EXPECT_EQ(report.sweeps, 10);
   EXPECT_LT(report.distortionAfter, 0.9 * report.distortionBefore);
   EXPECT_TRUE(std::isfinite(report.maximumDistortion)); // no triangle flipped or crushed
@@ -184,7 +196,7 @@ TEST(GlobalMap, LowersTheDistortionOfARealModelsMapAndKeepsItBijective)
   PatchParameterization flipped = s.map;
   for (auto& c : flipped.baseCoordinates)
     std::swap(c[1], c[2]);
-  EXPECT_NE(optimizeGlobalMap(s.straight.net, s.domain, charts, flipped, points, options).message().find("flipped"),
+  EXPECT_NE(optimizeGlobalMap(s.straight.net, s.domain, o.charts, flipped, points, options).message().find("flipped"),
     std::string::npos);
 }
 
