@@ -1,6 +1,10 @@
 #pragma once
 /// \file MeshFile.h
 /// \brief OFF and OBJ parsing and point welding, without VTK.
+///
+/// The readers take any file, including a damaged or hostile one: they fail
+/// with a Status naming the file and line,
+/// and never reserve memory for a count the file's size cannot hold.
 
 #include <cmp/mesh/Status.h>
 #include <cmp/mesh/TriangleMesh.h>
@@ -29,10 +33,19 @@ struct MeshFileData
 };
 
 /// \brief Reads an OFF file (`OFF`, counts, points, polygons).
+///
+/// Fails on a count the rest of the file cannot hold (a point takes at least
+/// six bytes, a face eight), on a missing or malformed record, and on an
+/// index out of range. When the header claims more points than the file
+/// lists, so that faces were read as points, the message says the points
+/// are missing.
 Status readOFF(const std::string& path, MeshFileData& out);
 
 /// \brief Reads the `v`, `vt` and `f` records of an OBJ file.
+///
+/// OBJ has no counts: memory grows with the records actually read.
 Status readOBJ(const std::string& path, MeshFileData& out);
+
 
 /// \brief Merges points with identical coordinates and renumbers triangles.
 ///
