@@ -1,9 +1,9 @@
 #pragma once
 /// \file MeshFile.h
-/// \brief OFF and OBJ parsing and point welding, without VTK.
+/// \brief OFF, OBJ and PLY parsing and point welding, without VTK.
 ///
 /// The readers take any file, including a damaged or hostile one: they fail
-/// with a Status naming the file and line,
+/// with a Status naming the file and line (the byte offset in binary PLY),
 /// and never reserve memory for a count the file's size cannot hold.
 
 #include <cmp/mesh/Status.h>
@@ -46,6 +46,24 @@ Status readOFF(const std::string& path, MeshFileData& out);
 /// OBJ has no counts: memory grows with the records actually read.
 Status readOBJ(const std::string& path, MeshFileData& out);
 
+/// \brief Reads a PLY file: ASCII, binary little or big endian, version 1.0.
+///
+/// Positions are the `vertex` element's scalar properties `x`, `y` and `z`
+/// (any type, kept as the file's values: a `float` ASCII value is rounded to
+/// float); triangles come from the `face` element's list property
+/// `vertex_indices` (or `vertex_index`) of integer type, polygons
+/// fan-triangulated, in the file's order. Other properties and elements are
+/// read by their declared types and skipped.
+///
+/// Fails, naming the file and the header or body line (the byte offset in a
+/// binary file), on: a malformed header (unknown keyword or type, no
+/// `end_header`, a property outside an element, duplicate names); a missing
+/// `vertex` element or `x`, `y`, `z`; a missing `face` element or index
+/// list; element counts the rest of the file cannot hold; a record with too
+/// few or too many values, a value that is not of its declared type or out
+/// of its range; a list count the file cannot hold; a face with fewer than
+/// three vertices or an index out of range; data after the last element.
+Status readPLY(const std::string& path, MeshFileData& out);
 
 /// \brief Merges points with identical coordinates and renumbers triangles.
 ///
