@@ -1,0 +1,39 @@
+#pragma once
+/// \file VTPCheck.h
+/// \brief A check of a VTK XML PolyData file (.vtp) before VTK's reader
+///        sees it, without VTK.
+
+#include <cmp/mesh/Status.h>
+
+#include <string>
+
+namespace cmp
+{
+
+/// \brief Refuses a `.vtp` file that VTK 9.2's `vtkXMLPolyDataReader` could
+///        crash on or exhaust memory with; accepts every file VTK writes.
+///
+/// Checks, naming the file and the line of the offending tag:
+/// - the XML is well formed as far as the reader relies on it: tags close in
+///   order, attributes are quoted, the file does not end inside a tag;
+/// - the root is `<VTKFile type="PolyData">` with a known `byte_order`,
+///   `header_type` (UInt32, UInt64) and `compressor`;
+/// - every `Piece` count (`NumberOfPoints`, `NumberOfPolys`, ...) and every
+///   `DataArray`'s `NumberOfTuples` and `NumberOfComponents` is an integer;
+/// - every `DataArray` has a type VTK knows (Int8 ... UInt64, Float32,
+///   Float64, String, Bit) and a format (ascii, binary, appended);
+/// - the values an array must hold (its `NumberOfTuples`, or the piece's
+///   point or cell count for point, cell and offset arrays, times its
+///   components; at least one byte per string) are present: as many ASCII
+///   values; in inline base64 data, as many bytes, and a block header that
+///   agrees with the bytes that follow; in appended data (raw or base64),
+///   a header inside the appended section and as many bytes after it.
+///   Compressed arrays must not claim more than 1032 times their compressed
+///   size (65536 times for LZMA), the most the compressors produce in
+///   practice.
+///
+/// It does not decompress data nor check values (for example connectivity
+/// ids): VTK's reader reports those itself.
+Status checkVTPFile(const std::string& path);
+
+} // namespace cmp
