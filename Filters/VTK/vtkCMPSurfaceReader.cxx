@@ -1,6 +1,7 @@
 #include "vtkCMPSurfaceReader.h"
 
 #include <cmp/io/MeshFile.h>
+#include <cmp/io/VTPCheck.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkAbstractPolyDataReader.h>
@@ -10,7 +11,6 @@
 #include <vtkIdTypeArray.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
-#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
@@ -51,18 +51,44 @@ private:
   vtkNew<vtkCallbackCommand> callback_;
 };
 
+/// True if VTK's STL reader takes the file for binary: it looks at the first
+/// 256 bytes and calls the file binary when 5% or more are not text. This
+/// errs towards binary (any NUL byte, or 2% of other bytes), so that every
+/// file VTK reads as binary gets the size check below.
+bool mayBeBinarySTL(const std::string& head)
+{
+  if (head.empty())
+    return true;
+  std::size_t other = 0;
+  for (char c : head)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (u == 0)
+      return true;
+    if ((u < 32 || u > 126) && u != '\n' && u != '\r' && u != '\t')
+      ++other;
+  }
+  return 50 * other >= head.size();
+}
+
 /// vtkSTLReader trusts a binary STL's triangle count and aborts the process
 /// when it cannot allocate that much, so check the count against the size.
+/// An ASCII STL has no count: VTK's parser grows with what it reads.
 cmp::Status checkBinarySTLSize(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
-  char header[84] = {};
-  in.read(header, sizeof(header));
-  if (in.gcount() < 84 || std::string(header, 5) == "solid")
-    return {}; // ASCII (or too short to be binary): VTK's parser reports problems
-  std::uint32_t count = 0;
-  std::memcpy(&count, header + 80, sizeof(count));
+  char head[256] = {};
+  in.read(head, sizeof(head));
+  const std::size_t read = static_cast<std::size_t>(in.gcount());
+  if (!mayBeBinarySTL(std::string(head, read)))
+    return {};
   const std::uintmax_t size = std::filesystem::file_size(path);
+  if (read < 84)
+    return cmp::Status::error("cannot read '" + path + "' as stl: a binary STL has at least 84 bytes, this file " +
+      std::to_string(size));
+  std::uint32_t count = 0;
+  for (int b = 3; b >= 0; --b)
+    count = (count << 8) | static_cast<unsigned char>(head[80 + b]);
   if (size != 84 + 50 * static_cast<std::uintmax_t>(count))
     return cmp::Status::error("cannot read '" + path + "' as stl: the header announces " + std::to_string(count) +
       " triangles (" + std::to_string(84 + 50 * static_cast<std::uintmax_t>(count)) + " bytes) but the file has " +
@@ -70,22 +96,19 @@ cmp::Status checkBinarySTLSize(const std::string& path)
   return {};
 }
 
-/// Reads PLY, STL or VTP with VTK's readers and triangulates polygons.
+/// Reads STL or VTP with VTK's readers and triangulates polygons.
 cmp::Status readWithVTK(const std::string& path, const std::string& extension, vtkSmartPointer<vtkPolyData>& result)
 {
+  // VTK 9.2's readers trust the files' counts and types: check them first.
   if (extension == "stl")
   {
     if (cmp::Status s = checkBinarySTLSize(path); !s.ok())
       return s;
   }
+  else if (cmp::Status s = cmp::checkVTPFile(path); !s.ok())
+    return s; // names the file and the line
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == "ply")
-  {
-    auto ply = vtkSmartPointer<vtkPLYReader>::New();
-    ply->SetFileName(path.c_str());
-    reader = ply;
-  }
-  else if (extension == "stl")
+  if (extension == "stl")
   {
     auto stl = vtkSmartPointer<vtkSTLReader>::New();
     stl->SetFileName(path.c_str());
@@ -206,6 +229,8 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
     status = cmp::readOFF(this->FileName, data);
   else if (ext == "obj")
     status = cmp::readOBJ(this->FileName, data);
+  else if (ext == "ply")
+    status = cmp::readPLY(this->FileName, data);
   else
   {
     status = readWithVTK(this->FileName, ext, fromVTK);
