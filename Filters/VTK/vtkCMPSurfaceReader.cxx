@@ -15,12 +15,16 @@
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
+#include <type_traits>
 
 vtkStandardNewMacro(vtkCMPSurfaceReader);
 
@@ -155,6 +159,87 @@ void copyWeldedPointData(vtkPointData* source, const std::vector<int>& fileToMes
     target->CopyData(source, firstFilePoint[p], p);
 }
 
+/// The values of the property named one of `names` (nullptr if none).
+const std::vector<double>* propertyValues(
+  const std::vector<cmp::MeshFileProperty>& properties, std::initializer_list<const char*> names)
+{
+  for (const char* name : names)
+  {
+    for (const cmp::MeshFileProperty& property : properties)
+    {
+      if (property.name == name)
+        return &property.values;
+    }
+  }
+  return nullptr;
+}
+
+/// A colour channel as VTK's PLY reader stores it: an unsigned char.
+unsigned char colorChannel(double value)
+{
+  return static_cast<unsigned char>(std::clamp(value, 0.0, 255.0));
+}
+
+/// An array of the named properties, one component each (nullptr unless
+/// every component is there).
+template <class ArrayType>
+vtkSmartPointer<ArrayType> propertyArray(const std::vector<cmp::MeshFileProperty>& properties, const char* arrayName,
+  std::initializer_list<std::initializer_list<const char*>> components)
+{
+  std::vector<const std::vector<double>*> columns;
+  for (const auto& names : components)
+  {
+    columns.push_back(propertyValues(properties, names));
+    if (!columns.back())
+      return nullptr;
+  }
+  auto array = vtkSmartPointer<ArrayType>::New();
+  array->SetName(arrayName);
+  array->SetNumberOfComponents(static_cast<int>(columns.size()));
+  array->SetNumberOfTuples(static_cast<vtkIdType>(columns[0]->size()));
+  for (std::size_t c = 0; c < columns.size(); ++c)
+  {
+    for (std::size_t i = 0; i < columns[c]->size(); ++i)
+    {
+      const double value = (*columns[c])[i];
+      if constexpr (std::is_same_v<ArrayType, vtkUnsignedCharArray>)
+        array->SetTypedComponent(static_cast<vtkIdType>(i), static_cast<int>(c), colorChannel(value));
+      else
+        array->SetTypedComponent(static_cast<vtkIdType>(i), static_cast<int>(c), static_cast<float>(value));
+    }
+  }
+  return array;
+}
+
+/// The PLY attributes VTK 9.2's PLY reader kept, with its names and types:
+/// point `Normals` (nx ny nz), point colours `RGB` or `RGBA` (red green blue
+/// [alpha], or diffuse_red ...), point `TCoords` (u v or texture_u
+/// texture_v), and face colours `RGB` on every triangle of the face.
+void addPLYAttributes(const cmp::MeshFileData& data, vtkPolyData* surface)
+{
+  vtkNew<vtkPointData> filePoints;
+  const auto& points = data.pointProperties;
+  if (auto normals = propertyArray<vtkFloatArray>(points, "Normals", { { "nx" }, { "ny" }, { "nz" } }))
+    filePoints->SetNormals(normals);
+  auto colors = propertyArray<vtkUnsignedCharArray>(points, "RGBA",
+    { { "red", "diffuse_red" }, { "green", "diffuse_green" }, { "blue", "diffuse_blue" }, { "alpha" } });
+  if (!colors)
+    colors = propertyArray<vtkUnsignedCharArray>(
+      points, "RGB", { { "red", "diffuse_red" }, { "green", "diffuse_green" }, { "blue", "diffuse_blue" } });
+  if (colors)
+    filePoints->SetScalars(colors);
+  auto tcoords = propertyArray<vtkFloatArray>(points, "TCoords", { { "u" }, { "v" } });
+  if (!tcoords)
+    tcoords = propertyArray<vtkFloatArray>(points, "TCoords", { { "texture_u" }, { "texture_v" } });
+  if (tcoords)
+    filePoints->SetTCoords(tcoords);
+  if (filePoints->GetNumberOfArrays() > 0)
+    copyWeldedPointData(filePoints, data.fileToMeshPoint, surface);
+  if (auto faceColors = propertyArray<vtkUnsignedCharArray>(
+        data.triangleProperties, "RGB", { { "red" }, { "green" }, { "blue" } }))
+    surface->GetCellData()->SetScalars(faceColors);
+}
+
 void addTextureCoordinates(const cmp::MeshFileData& data, vtkPolyData* output)
 {
   const auto& corners = data.cornerTexCoords;
@@ -252,6 +337,8 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   }
   if (!data.cornerTexCoords.empty())
     addTextureCoordinates(data, surface);
+  if (!data.pointProperties.empty() || !data.triangleProperties.empty())
+    addPLYAttributes(data, surface);
   if (welded > 0)
   {
     auto map = vtkSmartPointer<vtkIdTypeArray>::New();

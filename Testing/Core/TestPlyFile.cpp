@@ -140,6 +140,13 @@ TEST(PlyFile, ReadsEveryEncodingIdenticallySkippingOtherProperties)
     EXPECT_EQ(data.mesh.triangles, octahedron.triangles) << formatName(encoding);
     EXPECT_EQ(data.fileToMeshPoint.size(), 6u);
     EXPECT_TRUE(data.cornerTexCoords.empty());
+    // Scalar properties are kept, lists and other elements skipped.
+    ASSERT_EQ(data.pointProperties.size(), 1u) << formatName(encoding);
+    EXPECT_EQ(data.pointProperties[0].name, "quality");
+    EXPECT_EQ(data.pointProperties[0].values, std::vector<double>(6, 7.0));
+    ASSERT_EQ(data.triangleProperties.size(), 1u) << formatName(encoding);
+    EXPECT_EQ(data.triangleProperties[0].name, "label");
+    EXPECT_EQ(data.triangleProperties[0].values, std::vector<double>(8, -3.0));
   }
 }
 
@@ -157,6 +164,7 @@ TEST(PlyFile, FanTriangulatesPolygonsAndRoundsFloatValues)
   EXPECT_EQ(data.mesh.triangles[0], (Triangle{ 0, 3, 2 }));
   EXPECT_EQ(data.mesh.triangles[1], (Triangle{ 0, 2, 1 }));
   EXPECT_EQ(data.mesh.points[7].x(), static_cast<double>(0.1f)) << "declared float: rounded as VTK's reader does";
+  EXPECT_TRUE(data.pointProperties.empty());
   EXPECT_TRUE(checkSurface(data.mesh).ok()) << checkSurface(data.mesh).message;
 }
 

@@ -375,3 +375,41 @@ TEST(SurfaceReader, TheVTPCheckAcceptsEveryModeVTKWrites)
     }
   }
 }
+
+TEST(SurfaceReader, KeepsThePLYAttributesVTKsReaderKept)
+{
+  // A tetrahedron with normals, colours with alpha, texture coordinates and
+  // a quality per point, a colour per face, and one face a quad.
+  const std::string text = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                           "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+                           "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+                           "property float u\nproperty float v\nproperty float quality\nelement face 4\n"
+                           "property list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\n"
+                           "property uchar blue\nend_header\n"
+                           "0 0 0 -1 -1 -1 255 0 0 10 0.1 0.2 5\n1 0 0 1 0 0 0 255 0 20 0.3 0.4 6\n"
+                           "0 1 0 0 1 0 0 0 255 30 0.5 0.6 7\n0 0 1 0 0 1 9 9 9 40 0.7 0.8 8\n"
+                           "1 1 0 1 1 0 1 2 3 50 0.9 1.0 9\n"
+                           "4 0 2 4 1 10 20 30\n3 0 1 3 40 50 60\n3 1 4 3 70 80 90\n3 0 3 2 100 110 120\n";
+  const std::string path = writeTempFile("attributes.ply", text);
+  vtkSmartPointer<vtkPolyData> ours = readSurface(path);
+  vtkSmartPointer<vtkPolyData> theirs = readWithVTKPLYReader(path);
+  ASSERT_EQ(ours->GetNumberOfPoints(), 5);
+  ASSERT_EQ(ours->GetNumberOfPolys(), 5);
+  const auto expectSameArray = [](vtkDataArray* a, vtkDataArray* b, const std::string& name)
+  {
+    ASSERT_NE(a, nullptr) << name;
+    ASSERT_NE(b, nullptr) << name;
+    EXPECT_STREQ(a->GetName(), b->GetName());
+    EXPECT_EQ(a->GetDataType(), b->GetDataType()) << name;
+    ASSERT_EQ(a->GetNumberOfComponents(), b->GetNumberOfComponents()) << name;
+    ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples()) << name;
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+        EXPECT_EQ(a->GetComponent(i, c), b->GetComponent(i, c)) << name << " tuple " << i << " component " << c;
+  };
+  expectSameArray(ours->GetPointData()->GetNormals(), theirs->GetPointData()->GetNormals(), "Normals");
+  expectSameArray(ours->GetPointData()->GetScalars(), theirs->GetPointData()->GetScalars(), "RGBA");
+  expectSameArray(ours->GetPointData()->GetTCoords(), theirs->GetPointData()->GetTCoords(), "TCoords");
+  expectSameArray(ours->GetCellData()->GetScalars(), theirs->GetCellData()->GetScalars(), "cell RGB");
+  EXPECT_EQ(ours->GetPointData()->GetArray("quality"), nullptr) << "VTK's reader dropped other properties";
+}

@@ -18,6 +18,14 @@
 namespace cmp
 {
 
+/// \brief Values per point or per triangle that a file carries besides its
+///        geometry, under the file's name for them (PLY properties).
+struct MeshFileProperty
+{
+  std::string name;           ///< The file's property name, for example `red` or `nx`.
+  std::vector<double> values; ///< One value per file point, or per triangle.
+};
+
 /// \brief A surface as read from a file, before or after welding.
 struct MeshFileData
 {
@@ -30,6 +38,13 @@ struct MeshFileData
   ///        welding. Landmark files index the file's points, so they are
   ///        mapped through this.
   std::vector<int> fileToMeshPoint;
+  /// \brief PLY vertex scalar properties other than x, y and z, in the
+  ///        file's order: one value per file point (index them as
+  ///        `fileToMeshPoint` is indexed). Empty for OFF and OBJ.
+  std::vector<MeshFileProperty> pointProperties;
+  /// \brief PLY face scalar properties: one value per triangle, a polygon's
+  ///        value on each of its triangles. Empty for OFF and OBJ.
+  std::vector<MeshFileProperty> triangleProperties;
 };
 
 /// \brief Reads an OFF file (`OFF`, counts, points, polygons).
@@ -52,8 +67,10 @@ Status readOBJ(const std::string& path, MeshFileData& out);
 /// (any type, kept as the file's values: a `float` ASCII value is rounded to
 /// float); triangles come from the `face` element's list property
 /// `vertex_indices` (or `vertex_index`) of integer type, polygons
-/// fan-triangulated, in the file's order. Other properties and elements are
-/// read by their declared types and skipped.
+/// fan-triangulated, in the file's order. The vertex and face elements'
+/// other scalar properties are kept in `pointProperties` and
+/// `triangleProperties`; list properties and other elements are read by
+/// their declared types and skipped.
 ///
 /// Fails, naming the file and the header or body line (the byte offset in a
 /// binary file), on: a malformed header (unknown keyword or type, no

@@ -130,6 +130,9 @@ enum class PlyFormat
 struct Roles
 {
   int x = -1, y = -1, z = -1, indices = -1;
+  // Per property, where its values are kept in pointProperties (vertex) or
+  // triangleProperties (face); -1 when skipped.
+  std::vector<int> kept;
 };
 
 // "point", "face" or "'name' element", for messages.
@@ -213,6 +216,8 @@ private:
   Status takeFace(
     const std::vector<double>& polygon, std::uint64_t face, const std::string& where, MeshFileData& out) const;
   Status checkCountsFitInt();
+  Status takeRecord(const Roles& roles, const double* xyz, const std::vector<double>& polygon,
+    const std::vector<double>& values, std::uint64_t record, const std::string& where, MeshFileData& out) const;
   bool nextHeaderLine(std::string& line);
   Status headerError(const std::string& what) const { return Status::error(fileLine(path_, line_) + what); }
   Status byteError(std::size_t offset, const std::string& what) const
@@ -460,6 +465,30 @@ Status PlyParser::takeFace(
   return {};
 }
 
+Status PlyParser::takeRecord(const Roles& roles, const double* xyz, const std::vector<double>& polygon,
+  const std::vector<double>& values, std::uint64_t record, const std::string& where, MeshFileData& out) const
+{
+  const std::size_t before = out.mesh.triangles.size();
+  if (roles.x >= 0)
+    out.mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+  else if (roles.indices >= 0)
+  {
+    if (Status s = takeFace(polygon, record, where, out); !s.ok())
+      return s;
+  }
+  else
+    return {};
+  // A point's values once, a polygon's once per triangle.
+  const std::size_t copies = roles.x >= 0 ? 1 : out.mesh.triangles.size() - before;
+  std::vector<MeshFileProperty>& kept = roles.x >= 0 ? out.pointProperties : out.triangleProperties;
+  for (std::size_t k = 0; k < roles.kept.size(); ++k)
+  {
+    if (roles.kept[k] >= 0)
+      kept[roles.kept[k]].values.insert(kept[roles.kept[k]].values.end(), copies, values[roles.kept[k]]);
+  }
+  return {};
+}
+
 // Parses one ASCII value of `type`: integers must be integers within the
 // type's range; float values are rounded to float as the file declares.
 bool parseAsciiValue(const std::string& word, PlyType type, double& value)
@@ -498,6 +527,7 @@ Status PlyParser::readAscii(MeshFileData& out)
   {
     const PlyElement& element = elements_[e];
     const Roles& roles = roles_[e];
+    std::vector<double> recordValues(roles.kept.size());
     for (std::uint64_t r = 0; r < element.count; ++r)
     {
       std::vector<std::string> words;
@@ -551,18 +581,15 @@ Status PlyParser::readAscii(MeshFileData& out)
             xyz[2] = value;
           else if (index == roles.indices)
             polygon.push_back(value);
+          else if (roles.kept[k] >= 0)
+            recordValues[roles.kept[k]] = value;
         }
       }
       if (w != words.size())
         return Status::error(where + what + " has " + std::to_string(words.size()) + " values; its properties take " +
           std::to_string(w));
-      if (roles.x >= 0)
-        out.mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-      if (roles.indices >= 0)
-      {
-        if (Status s = takeFace(polygon, r, where, out); !s.ok())
-          return s;
-      }
+      if (Status s = takeRecord(roles, xyz, polygon, recordValues, r, where, out); !s.ok())
+        return s;
     }
   }
   while (nextHeaderLine(line))
@@ -633,6 +660,7 @@ Status PlyParser::readBinary(MeshFileData& out)
   {
     const PlyElement& element = elements_[e];
     const Roles& roles = roles_[e];
+    std::vector<double> recordValues(roles.kept.size());
     for (std::uint64_t r = 0; r < element.count; ++r)
     {
       const std::size_t start = pos;
@@ -657,6 +685,8 @@ Status PlyParser::readBinary(MeshFileData& out)
             xyz[1] = value;
           else if (index == roles.z)
             xyz[2] = value;
+          else if (roles.kept[k] >= 0)
+            recordValues[roles.kept[k]] = value;
           continue;
         }
         const std::size_t countAt = pos;
@@ -681,13 +711,9 @@ Status PlyParser::readBinary(MeshFileData& out)
           polygon.push_back(value);
         }
       }
-      if (roles.x >= 0)
-        out.mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-      if (roles.indices >= 0)
-      {
-        if (Status s = takeFace(polygon, r, path_ + ": byte " + std::to_string(start) + ": ", out); !s.ok())
-          return s;
-      }
+      if (Status s = takeRecord(roles, xyz, polygon, recordValues, r, path_ + ": byte " + std::to_string(start) + ": ", out);
+          !s.ok())
+        return s;
     }
   }
   if (pos != bytes_.size())
@@ -707,10 +733,28 @@ Status PlyParser::read(MeshFileData& out)
     return s;
   for (std::size_t e = 0; e < elements_.size(); ++e)
   {
-    if (roles_[e].x >= 0)
-      out.mesh.points.reserve(static_cast<std::size_t>(elements_[e].count));
-    if (roles_[e].indices >= 0)
-      out.mesh.triangles.reserve(static_cast<std::size_t>(elements_[e].count));
+    const PlyElement& element = elements_[e];
+    Roles& roles = roles_[e];
+    const bool vertex = roles.x >= 0;
+    const bool face = roles.indices >= 0;
+    roles.kept.assign(element.properties.size(), -1);
+    if (!vertex && !face)
+      continue;
+    const std::size_t count = static_cast<std::size_t>(element.count);
+    std::vector<MeshFileProperty>& kept = vertex ? out.pointProperties : out.triangleProperties;
+    for (std::size_t k = 0; k < element.properties.size(); ++k)
+    {
+      const int index = static_cast<int>(k);
+      if (element.properties[k].isList || index == roles.x || index == roles.y || index == roles.z)
+        continue;
+      roles.kept[k] = static_cast<int>(kept.size());
+      kept.push_back({ element.properties[k].name, {} });
+      kept.back().values.reserve(count);
+    }
+    if (vertex)
+      out.mesh.points.reserve(count);
+    else
+      out.mesh.triangles.reserve(count);
   }
   return format_ == PlyFormat::Ascii ? readAscii(out) : readBinary(out);
 }
