@@ -328,14 +328,14 @@ TEST(SurfaceReader, RefusesHostileCountsInOFFSTLAndVTP)
     stl += std::string("\x01\x80\x00\x3f", 4);
   EXPECT_NE(expectReadError("solid.stl", stl).find("the header announces 2147483647 triangles"), std::string::npos);
   const std::string vtp = "<VTKFile type=\"PolyData\" version=\"1.0\">\n<PolyData>\n<FieldData>\n"
-                          "<DataArray type=\"String\" Name=\"S\" NumberOfTuples=\"2147483648\" format=\"ascii\">"
-                          "97 0</DataArray>\n</FieldData>\n<Piece NumberOfPoints=\"0\"></Piece>\n</PolyData>\n"
+                          "<Array type=\"String\" Name=\"S\" NumberOfTuples=\"2147483648\" format=\"ascii\">"
+                          "97 0</Array>\n</FieldData>\n<Piece NumberOfPoints=\"0\"></Piece>\n</PolyData>\n"
                           "</VTKFile>\n";
-  EXPECT_NE(expectReadError("strings.vtp", vtp).find("strings.vtp:4: DataArray 'S' needs 2147483648 values"),
+  EXPECT_NE(expectReadError("strings.vtp", vtp).find("strings.vtp:4: Array 'S' needs 2147483648 values"),
     std::string::npos);
   std::string unknown = vtp;
   unknown.replace(unknown.find("type=\"String\""), 13, "type=\"Str1ng\"");
-  EXPECT_NE(expectReadError("type.vtp", unknown).find("type.vtp:4: DataArray 'S' has type 'Str1ng'"),
+  EXPECT_NE(expectReadError("type.vtp", unknown).find("type.vtp:4: Array 'S' has type 'Str1ng'"),
     std::string::npos);
 }
 

@@ -114,6 +114,12 @@ bool decodeBase64(const std::string& text, std::size_t begin, std::size_t end, s
   return have == 0;
 }
 
+// VTK writes numeric arrays as <DataArray> and string arrays as <Array>.
+bool isArray(const std::string& tagName)
+{
+  return tagName == "DataArray" || tagName == "Array";
+}
+
 struct Tag
 {
   std::string name;
@@ -352,7 +358,7 @@ Status VTPChecker::checkArray(const Tag& tag, const std::string& parent, const s
 {
   const auto& a = tag.attributes;
   const auto name = a.find("Name");
-  const std::string what = fileLine(path_, tag.line) + "DataArray" +
+  const std::string what = fileLine(path_, tag.line) + tag.name +
     (name == a.end() ? std::string() : " '" + name->second + "'");
   const auto type = a.find("type");
   if (type == a.end())
@@ -440,9 +446,13 @@ Status VTPChecker::checkAppended(const Tag& tag)
   const std::string encoding = encodingIt == tag.attributes.end() ? "raw" : encodingIt->second;
   if (encoding != "raw" && encoding != "base64")
     return error(tag.line, "unknown AppendedData encoding '" + encoding + "' (raw or base64)");
-  const std::size_t underscore = text_.find('_', tag.end);
-  if (underscore == std::string::npos)
-    return error(tag.line, "AppendedData without the '_' that starts its data");
+  // VTK's parser takes the first character after blanks for the '_' and,
+  // when it is not, reads block headers from the wrong place.
+  std::size_t underscore = tag.end;
+  while (underscore < text_.size() && isBlank(text_[underscore]))
+    ++underscore;
+  if (underscore >= text_.size() || text_[underscore] != '_')
+    return error(lineAt(underscore), "AppendedData does not start with '_' (only blanks may come before it)");
   const std::size_t begin = underscore + 1;
   if (encoding == "raw")
   {
@@ -488,7 +498,7 @@ Status VTPChecker::check()
   if (tag.empty)
     return error(tag.line, "an empty <VTKFile/>");
   std::vector<Tag> open{ tag };
-  std::string content; // character data directly inside the open DataArray
+  std::string content; // character data directly inside the open array
   std::size_t contentFrom = tag.end;
   while (true)
   {
@@ -501,7 +511,7 @@ Status VTPChecker::check()
           std::to_string(open.back().line) + ")");
       break;
     }
-    if (!open.empty() && open.back().name == "DataArray")
+    if (!open.empty() && isArray(open.back().name))
       content.append(text_, contentFrom, tag.begin - contentFrom);
     if (tag.closing)
     {
@@ -509,7 +519,7 @@ Status VTPChecker::check()
         return error(tag.line, "</" + tag.name + "> closes " +
           (open.empty() ? std::string("nothing") : "<" + open.back().name + "> (line " +
             std::to_string(open.back().line) + ")"));
-      if (tag.name == "DataArray")
+      if (isArray(tag.name))
       {
         const Tag array = open.back();
         const std::string parent = open.size() >= 2 ? open[open.size() - 2].name : std::string();
@@ -540,14 +550,14 @@ Status VTPChecker::check()
     }
     if (tag.name == "AppendedData")
       return checkAppended(tag);
-    if (tag.name == "DataArray" && tag.empty)
+    if (isArray(tag.name) && tag.empty)
     {
       const std::string parent = open.back().name;
       if (Status s = checkArray(tag, parent, std::string()); !s.ok())
         return s;
     }
     contentFrom = tag.end;
-    if (tag.name == "DataArray")
+    if (isArray(tag.name))
       content.clear();
     if (!tag.empty)
       open.push_back(tag);

@@ -19,18 +19,19 @@ namespace cmp
 /// - the root is `<VTKFile type="PolyData">` with a known `byte_order`,
 ///   `header_type` (UInt32, UInt64) and `compressor`;
 /// - every `Piece` count (`NumberOfPoints`, `NumberOfPolys`, ...) and every
-///   `DataArray`'s `NumberOfTuples` and `NumberOfComponents` is an integer;
-/// - every `DataArray` has a type VTK knows (Int8 ... UInt64, Float32,
+///   array's (`DataArray`, and `Array` for strings) `NumberOfTuples` and
+///   `NumberOfComponents` is an integer;
+/// - every array has a type VTK knows (Int8 ... UInt64, Float32,
 ///   Float64, String, Bit) and a format (ascii, binary, appended);
 /// - the values an array must hold (its `NumberOfTuples`, or the piece's
 ///   point or cell count for point, cell and offset arrays, times its
 ///   components; at least one byte per string) are present: as many ASCII
 ///   values; in inline base64 data, as many bytes, and a block header that
 ///   agrees with the bytes that follow; in appended data (raw or base64),
-///   a header inside the appended section and as many bytes after it.
-///   Compressed arrays must not claim more than 1032 times their compressed
-///   size (65536 times for LZMA), the most the compressors produce in
-///   practice.
+///   a header inside the appended section and as many bytes after it, the
+///   section starting with `_` after blanks only. A compressed array must
+///   not claim more than 1032 times its compressed size (deflate's limit,
+///   also above LZ4's), or 65536 times for LZMA.
 ///
 /// It does not decompress data nor check values (for example connectivity
 /// ids): VTK's reader reports those itself.
