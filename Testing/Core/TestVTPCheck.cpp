@@ -196,3 +196,41 @@ TEST(VTPCheck, RefusesMalformedXMLAndOtherFiles)
   EXPECT_NE(message.find("order.vtp:1: unknown byte_order 'MiddleEndian'"), std::string::npos) << message;
   EXPECT_NE(checkVTPFile("/nonexistent/a.vtp").message().find("cannot open '/nonexistent/a.vtp'"), std::string::npos);
 }
+
+TEST(VTPCheck, RefusesMoreStringsThanDeclared)
+{
+  // VTK 9.2 stores every string it splits off into an array of the declared
+  // size: a second string where one is declared crashed it (found by fuzzing).
+  const std::string ascii = "      <Array type=\"String\" Name=\"SourceFile\" NumberOfTuples=\"1\" format=\"ascii\">"
+                            "97 0 98 0</Array>\n";
+  std::string message = check("twostrings.vtp", polyData(ascii, kAsciiPoints));
+  EXPECT_NE(message.find("twostrings.vtp:5: Array 'SourceFile' holds 2 strings but declares 1"), std::string::npos)
+    << message;
+  const std::string binary = "      <Array type=\"String\" Name=\"SourceFile\" NumberOfTuples=\"1\" format=\"binary\">" +
+    inlineBinary(std::string("a\0b\0", 4)) + "</Array>\n";
+  message = check("twostrings-binary.vtp", polyData(binary, kAsciiPoints));
+  EXPECT_NE(message.find("twostrings-binary.vtp:5: Array 'SourceFile' holds 2 strings but declares 1"),
+    std::string::npos)
+    << message;
+}
+
+TEST(VTPCheck, RefusesALastOffsetBeyondTheConnectivity)
+{
+  // VTK 9.2 sizes the connectivity it reads by the last offset: a fuzzed
+  // offset made it abort allocating 2^41 values.
+  std::string text = polyData("", kAsciiPoints);
+  text.replace(text.find("format=\"ascii\">3</DataArray>"), 28, "format=\"ascii\">3000000000000</DataArray>");
+  std::string message = check("offset-ascii.vtp", text);
+  EXPECT_NE(message.find("offset-ascii.vtp:14: DataArray 'offsets': its last offset, 3000000000000, is beyond the 3 "
+                         "values of the connectivity"),
+    std::string::npos)
+    << message;
+  std::string offsets(8, '\0');
+  offsets[5] = '\x02'; // 2^41, little endian Int64
+  text = polyData("", kAsciiPoints);
+  text.replace(text.find("format=\"ascii\">3</DataArray>"), 28, "format=\"binary\">" + inlineBinary(offsets) + "</DataArray>");
+  message = check("offset-binary.vtp", text);
+  EXPECT_NE(message.find("offset-binary.vtp:14: DataArray 'offsets': its last offset, 2199023255552, is beyond"),
+    std::string::npos)
+    << message;
+}

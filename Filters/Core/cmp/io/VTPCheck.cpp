@@ -136,12 +136,36 @@ struct PieceCounts
   Count cells() const { return sum(sum(verts, lines), sum(strips, polys)); }
 };
 
-// A DataArray waiting for the appended section.
-struct AppendedArray
+// What an array must hold, and where it belongs.
+struct ArrayInfo
 {
   std::string what; // "path:line: DataArray 'Name'"
-  Count offset = 0;
-  Count bytes = 0; // least bytes its values need
+  std::string type;
+  int size = 0;      // bytes per value; 0 for String and Bit
+  Count values = 0;  // tuples times components
+  Count need = 0;    // least bytes its values need
+  Count offset = 0;  // appended only
+  std::string cells; // "piece/Polys" for a cell array's connectivity or offsets
+  bool isOffsets = false, isConnectivity = false;
+};
+
+// A piece's Verts, Lines, Strips or Polys: VTK sizes the connectivity it
+// reads by the last offset, so that offset must not exceed the values the
+// connectivity holds.
+struct CellArrays
+{
+  std::string where;
+  bool haveLastOffset = false, haveConnectivity = false;
+  Count lastOffset = 0, connectivity = 0;
+};
+
+// What the uncompressed data of a block says, when it can be read without
+// decompressing.
+struct BlockData
+{
+  bool compressed = false;
+  Count bytes = 0;       // uncompressed bytes
+  std::size_t at = 0;    // where the data starts (uncompressed only)
 };
 
 class VTPChecker
@@ -165,7 +189,11 @@ private:
   bool nextTag(Tag& tag, std::string& problem);
   Status checkRoot(const Tag& tag);
   Status checkArray(const Tag& tag, const std::string& parent, const std::string& content);
-  Status checkBlocks(const std::string& where, const std::string& decoded, std::size_t at, Count need);
+  Status checkBlocks(const std::string& where, const std::string& decoded, std::size_t at, Count need, BlockData& block);
+  Status checkBinaryArray(const ArrayInfo& array, const std::string& data, std::size_t at);
+  Status checkStringCount(const ArrayInfo& array, Count strings) const;
+  Status checkCellArrays() const;
+  Count readValue(const std::string& bytes, std::size_t at, const std::string& type) const;
   Status checkAppended(const Tag& tag);
   Count readHeaderInt(const std::string& bytes, std::size_t at) const;
 
@@ -178,7 +206,9 @@ private:
   std::size_t headerSize_ = 4;
   Count ratio_ = 0; // 0: not compressed
   PieceCounts piece_;
-  std::vector<AppendedArray> appended_;
+  int pieces_ = 0;
+  std::vector<ArrayInfo> appended_;
+  std::map<std::string, CellArrays> cellArrays_;
 };
 
 bool VTPChecker::nextTag(Tag& tag, std::string& problem)
@@ -312,8 +342,10 @@ Count VTPChecker::readHeaderInt(const std::string& bytes, std::size_t at) const
 
 // Checks the block header at `at` in `data` and the bytes after it: they must
 // hold `need` bytes.
-Status VTPChecker::checkBlocks(const std::string& where, const std::string& data, std::size_t at, Count need)
+Status VTPChecker::checkBlocks(
+  const std::string& where, const std::string& data, std::size_t at, Count need, BlockData& block)
 {
+  block = BlockData{};
   const Count present = data.size() - std::min<std::size_t>(at, data.size());
   if (present < headerSize_)
     return Status::error(where + ": no room for its " + std::to_string(headerSize_) + "-byte header");
@@ -326,8 +358,11 @@ Status VTPChecker::checkBlocks(const std::string& where, const std::string& data
     if (need > bytes)
       return Status::error(where + ": needs " + std::to_string(need) + " bytes but its data has " +
         std::to_string(bytes));
+    block.bytes = bytes;
+    block.at = at + headerSize_;
     return {};
   }
+  block.compressed = true;
   if (present < 3 * headerSize_)
     return Status::error(where + ": no room for its compression header");
   const Count blocks = readHeaderInt(data, at);
@@ -351,6 +386,77 @@ Status VTPChecker::checkBlocks(const std::string& where, const std::string& data
   if (need > uncompressed)
     return Status::error(where + ": needs " + std::to_string(need) + " bytes but its data has " +
       std::to_string(uncompressed));
+  block.bytes = uncompressed;
+  return {};
+}
+
+// An integer value of `type` at `at` in the file's byte order (floats: 0).
+Count VTPChecker::readValue(const std::string& bytes, std::size_t at, const std::string& type) const
+{
+  const int size = valueSize(type);
+  Count value = 0;
+  for (int b = 0; b < size; ++b)
+  {
+    const Count byte = static_cast<unsigned char>(bytes[at + b]);
+    value |= byte << (8 * (bigEndian_ ? size - 1 - b : b));
+  }
+  const bool isSigned = type[0] == 'I';
+  if (isSigned && size < 8 && (value >> (8 * size - 1)) != 0)
+    return kHuge; // negative: no connectivity holds it
+  if (isSigned && size == 8 && (value >> 63) != 0)
+    return kHuge;
+  return type[0] == 'F' ? 0 : value;
+}
+
+// VTK stores the strings it splits off into an array of the declared size:
+// more strings than that writes past its end.
+Status VTPChecker::checkStringCount(const ArrayInfo& array, Count strings) const
+{
+  if (strings != array.values)
+    return Status::error(array.what + " holds " + std::to_string(strings) + " strings but declares " +
+      std::to_string(array.values));
+  return {};
+}
+
+Status VTPChecker::checkBinaryArray(const ArrayInfo& array, const std::string& data, std::size_t at)
+{
+  BlockData block;
+  if (Status s = checkBlocks(array.what, data, at, array.need, block); !s.ok())
+    return s;
+  if (block.compressed)
+    return {}; // its values cannot be seen without decompressing
+  if (array.type == "String")
+  {
+    const auto begin = data.begin() + static_cast<std::ptrdiff_t>(block.at);
+    return checkStringCount(array, static_cast<Count>(std::count(begin, begin + static_cast<std::ptrdiff_t>(block.bytes), '\0')));
+  }
+  if (array.cells.empty() || array.size == 0)
+    return {};
+  CellArrays& cells = cellArrays_[array.cells];
+  if (array.isConnectivity)
+  {
+    cells.haveConnectivity = true;
+    cells.connectivity = block.bytes / static_cast<Count>(array.size);
+  }
+  if (array.isOffsets && block.bytes >= static_cast<Count>(array.size))
+  {
+    cells.haveLastOffset = true;
+    cells.lastOffset = readValue(data, block.at + static_cast<std::size_t>(block.bytes) - array.size, array.type);
+    cells.where = array.what;
+  }
+  return {};
+}
+
+Status VTPChecker::checkCellArrays() const
+{
+  for (const auto& [key, cells] : cellArrays_)
+  {
+    if (cells.haveLastOffset && cells.lastOffset > 0 && (!cells.haveConnectivity || cells.lastOffset > cells.connectivity))
+      return Status::error(cells.where + ": its last offset, " +
+        (cells.lastOffset == kHuge ? std::string("negative") : std::to_string(cells.lastOffset)) +
+        ", is beyond the " + std::to_string(cells.haveConnectivity ? cells.connectivity : 0) +
+        " values of the connectivity");
+  }
   return {};
 }
 
@@ -395,15 +501,27 @@ Status VTPChecker::checkArray(const Tag& tag, const std::string& parent, const s
                                           : 0;
     tuples = std::max(tuples, cells);
   }
-  const Count values = product(tuples, components);
-  const bool strings = type->second == "String";
-  const Count need = strings ? values : type->second == "Bit" ? values / 8 + (values % 8 ? 1 : 0)
-                                                              : product(values, static_cast<Count>(size));
+  ArrayInfo array;
+  array.what = what;
+  array.type = type->second;
+  array.size = size;
+  array.values = product(tuples, components);
+  const Count values = array.values;
+  array.need = array.type == "String" ? values
+    : array.type == "Bit"             ? values / 8 + (values % 8 ? 1 : 0)
+                                      : product(values, static_cast<Count>(size));
+  if (parent == "Verts" || parent == "Lines" || parent == "Strips" || parent == "Polys")
+  {
+    array.cells = std::to_string(pieces_) + "/" + parent;
+    array.isOffsets = arrayName == "offsets";
+    array.isConnectivity = arrayName == "connectivity";
+  }
   const auto formatIt = a.find("format");
   const std::string format = formatIt == a.end() ? "ascii" : formatIt->second;
   if (format == "ascii")
   {
-    Count words = 0;
+    Count words = 0, zeros = 0;
+    std::string last;
     for (std::size_t i = 0; i < content.size();)
     {
       while (i < content.size() && isBlank(content[i]))
@@ -411,12 +529,33 @@ Status VTPChecker::checkArray(const Tag& tag, const std::string& parent, const s
       if (i >= content.size())
         break;
       ++words;
+      const std::size_t begin = i;
       while (i < content.size() && !isBlank(content[i]))
         ++i;
+      last.assign(content, begin, i - begin);
+      zeros += last == "0" ? 1 : 0;
     }
     if (words < values)
       return Status::error(what + " needs " + std::to_string(values) + " values (" + std::to_string(tuples) +
         " tuples of " + std::to_string(components) + ") but has " + std::to_string(words));
+    if (array.type == "String")
+      return checkStringCount(array, zeros);
+    if (!array.cells.empty())
+    {
+      CellArrays& cells = cellArrays_[array.cells];
+      if (array.isConnectivity)
+      {
+        cells.haveConnectivity = true;
+        cells.connectivity = words;
+      }
+      Count lastOffset = 0;
+      if (array.isOffsets && words > 0)
+      {
+        cells.haveLastOffset = true;
+        cells.lastOffset = parseCount(last, lastOffset) ? lastOffset : kHuge;
+        cells.where = what;
+      }
+    }
     return {};
   }
   if (format == "binary")
@@ -424,16 +563,13 @@ Status VTPChecker::checkArray(const Tag& tag, const std::string& parent, const s
     std::string decoded;
     if (!decodeBase64(content, 0, content.size(), decoded))
       return Status::error(what + ": its binary data is not base64");
-    return checkBlocks(what, decoded, 0, need);
+    return checkBinaryArray(array, decoded, 0);
   }
   if (format == "appended")
   {
-    AppendedArray array;
-    array.what = what;
     const auto offset = a.find("offset");
     if (offset == a.end() || !parseCount(offset->second, array.offset))
       return Status::error(what + ": an appended array needs an integer offset");
-    array.bytes = need;
     appended_.push_back(array);
     return {};
   }
@@ -461,19 +597,18 @@ Status VTPChecker::checkAppended(const Tag& tag)
     const std::size_t close = text_.rfind("</AppendedData>");
     const std::size_t end = close == std::string::npos || close < begin ? text_.size() : close;
     const std::string data = text_.substr(begin, end - begin);
-    for (const AppendedArray& array : appended_)
+    for (const ArrayInfo& array : appended_)
     {
       if (array.offset >= data.size())
         return Status::error(array.what + ": offset " + std::to_string(array.offset) +
           " is beyond the appended data (" + std::to_string(data.size()) + " bytes)");
-      if (Status s = checkBlocks(array.what, data, static_cast<std::size_t>(array.offset), array.bytes);
-          !s.ok())
+      if (Status s = checkBinaryArray(array, data, static_cast<std::size_t>(array.offset)); !s.ok())
         return s;
     }
-    return {};
+    return checkCellArrays();
   }
   const std::size_t end = std::min(text_.find('<', begin), text_.size());
-  for (const AppendedArray& array : appended_)
+  for (const ArrayInfo& array : appended_)
   {
     if (array.offset >= end - begin)
       return Status::error(array.what + ": offset " + std::to_string(array.offset) +
@@ -481,10 +616,10 @@ Status VTPChecker::checkAppended(const Tag& tag)
     std::string decoded;
     if (!decodeBase64(text_, begin + static_cast<std::size_t>(array.offset), end, decoded))
       return Status::error(array.what + ": the appended data at its offset is not base64");
-    if (Status s = checkBlocks(array.what, decoded, 0, array.bytes); !s.ok())
+    if (Status s = checkBinaryArray(array, decoded, 0); !s.ok())
       return s;
   }
-  return {};
+  return checkCellArrays();
 }
 
 Status VTPChecker::check()
@@ -537,6 +672,7 @@ Status VTPChecker::check()
       return error(tag.line, "<" + tag.name + "> after the end of <VTKFile>");
     if (tag.name == "Piece")
     {
+      ++pieces_;
       piece_ = PieceCounts{};
       const std::pair<const char*, Count*> counts[] = { { "NumberOfPoints", &piece_.points },
         { "NumberOfVerts", &piece_.verts }, { "NumberOfLines", &piece_.lines },
@@ -564,7 +700,7 @@ Status VTPChecker::check()
   }
   if (!appended_.empty())
     return Status::error(appended_.front().what + ": appended, but the file has no AppendedData");
-  return {};
+  return checkCellArrays();
 }
 
 } // namespace

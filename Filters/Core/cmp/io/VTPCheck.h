@@ -31,10 +31,16 @@ namespace cmp
 ///   a header inside the appended section and as many bytes after it, the
 ///   section starting with `_` after blanks only. A compressed array must
 ///   not claim more than 1032 times its compressed size (deflate's limit,
-///   also above LZ4's), or 65536 times for LZMA.
+///   also above LZ4's), or 65536 times for LZMA;
+/// - where the data can be read without decompressing (ASCII, uncompressed
+///   binary or appended): a string array holds exactly as many strings as
+///   it declares (VTK writes past the end of its array otherwise), and a
+///   cell array's last offset does not exceed the values its connectivity
+///   holds (VTK allocates the connectivity by it).
 ///
-/// It does not decompress data nor check values (for example connectivity
-/// ids): VTK's reader reports those itself.
+/// It does not decompress data, so a crafted compressed file can still
+/// carry a string count or a last offset that VTK trusts; nor does it check
+/// other values (for example connectivity ids): VTK's reader reports those.
 Status checkVTPFile(const std::string& path);
 
 } // namespace cmp
