@@ -19,8 +19,8 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -55,10 +55,11 @@ private:
   vtkNew<vtkCallbackCommand> callback_;
 };
 
-/// True if VTK's STL reader takes the file for binary: it looks at the first
-/// 256 bytes and calls the file binary when 5% or more are not text. This
-/// errs towards binary (any NUL byte, or 2% of other bytes), so that every
-/// file VTK reads as binary gets the size check below.
+/// True if VTK's STL reader may take the file for binary: it looks at the
+/// first bytes (kwsys DetectFileType) and calls the file binary when a share
+/// of them are not text, whatever the header says. This errs towards binary
+/// (any NUL byte, or 2% of other bytes in the first 256), so that every file
+/// VTK reads as binary gets the size check below.
 bool mayBeBinarySTL(const std::string& head)
 {
   if (head.empty())
@@ -174,10 +175,11 @@ const std::vector<double>* propertyValues(
   return nullptr;
 }
 
-/// A colour channel as VTK's PLY reader stores it: an unsigned char.
+/// A colour channel as VTK's PLY reader stores it: an unsigned char (a
+/// value out of range is clamped, NaN is 0).
 unsigned char colorChannel(double value)
 {
-  return static_cast<unsigned char>(std::clamp(value, 0.0, 255.0));
+  return std::isnan(value) ? 0 : static_cast<unsigned char>(std::clamp(value, 0.0, 255.0));
 }
 
 /// An array of the named properties, one component each (nullptr unless
