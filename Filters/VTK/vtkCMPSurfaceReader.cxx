@@ -1,6 +1,7 @@
 #include "vtkCMPSurfaceReader.h"
 
 #include <cmp/io/MeshFile.h>
+#include <cmp/io/VTPCheck.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkAbstractPolyDataReader.h>
@@ -10,17 +11,20 @@
 #include <vtkIdTypeArray.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
-#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
+#include <type_traits>
 
 vtkStandardNewMacro(vtkCMPSurfaceReader);
 
@@ -51,18 +55,45 @@ private:
   vtkNew<vtkCallbackCommand> callback_;
 };
 
+/// True if VTK's STL reader may take the file for binary: it looks at the
+/// first bytes (kwsys DetectFileType) and calls the file binary when a share
+/// of them are not text, whatever the header says. This errs towards binary
+/// (any NUL byte, or 2% of other bytes in the first 256), so that every file
+/// VTK reads as binary gets the size check below.
+bool mayBeBinarySTL(const std::string& head)
+{
+  if (head.empty())
+    return true;
+  std::size_t other = 0;
+  for (char c : head)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (u == 0)
+      return true;
+    if ((u < 32 || u > 126) && u != '\n' && u != '\r' && u != '\t')
+      ++other;
+  }
+  return 50 * other >= head.size();
+}
+
 /// vtkSTLReader trusts a binary STL's triangle count and aborts the process
 /// when it cannot allocate that much, so check the count against the size.
+/// An ASCII STL has no count: VTK's parser grows with what it reads.
 cmp::Status checkBinarySTLSize(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
-  char header[84] = {};
-  in.read(header, sizeof(header));
-  if (in.gcount() < 84 || std::string(header, 5) == "solid")
-    return {}; // ASCII (or too short to be binary): VTK's parser reports problems
-  std::uint32_t count = 0;
-  std::memcpy(&count, header + 80, sizeof(count));
+  char head[256] = {};
+  in.read(head, sizeof(head));
+  const std::size_t read = static_cast<std::size_t>(in.gcount());
+  if (!mayBeBinarySTL(std::string(head, read)))
+    return {};
   const std::uintmax_t size = std::filesystem::file_size(path);
+  if (read < 84)
+    return cmp::Status::error("cannot read '" + path + "' as stl: a binary STL has at least 84 bytes, this file " +
+      std::to_string(size));
+  std::uint32_t count = 0;
+  for (int b = 3; b >= 0; --b)
+    count = (count << 8) | static_cast<unsigned char>(head[80 + b]);
   if (size != 84 + 50 * static_cast<std::uintmax_t>(count))
     return cmp::Status::error("cannot read '" + path + "' as stl: the header announces " + std::to_string(count) +
       " triangles (" + std::to_string(84 + 50 * static_cast<std::uintmax_t>(count)) + " bytes) but the file has " +
@@ -70,22 +101,19 @@ cmp::Status checkBinarySTLSize(const std::string& path)
   return {};
 }
 
-/// Reads PLY, STL or VTP with VTK's readers and triangulates polygons.
+/// Reads STL or VTP with VTK's readers and triangulates polygons.
 cmp::Status readWithVTK(const std::string& path, const std::string& extension, vtkSmartPointer<vtkPolyData>& result)
 {
+  // VTK 9.2's readers trust the files' counts and types: check them first.
   if (extension == "stl")
   {
     if (cmp::Status s = checkBinarySTLSize(path); !s.ok())
       return s;
   }
+  else if (cmp::Status s = cmp::checkVTPFile(path); !s.ok())
+    return s; // names the file and the line
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == "ply")
-  {
-    auto ply = vtkSmartPointer<vtkPLYReader>::New();
-    ply->SetFileName(path.c_str());
-    reader = ply;
-  }
-  else if (extension == "stl")
+  if (extension == "stl")
   {
     auto stl = vtkSmartPointer<vtkSTLReader>::New();
     stl->SetFileName(path.c_str());
@@ -130,6 +158,88 @@ void copyWeldedPointData(vtkPointData* source, const std::vector<int>& fileToMes
   target->CopyAllocate(source, count);
   for (vtkIdType p = 0; p < count; ++p)
     target->CopyData(source, firstFilePoint[p], p);
+}
+
+/// The values of the property named one of `names` (nullptr if none).
+const std::vector<double>* propertyValues(
+  const std::vector<cmp::MeshFileProperty>& properties, std::initializer_list<const char*> names)
+{
+  for (const char* name : names)
+  {
+    for (const cmp::MeshFileProperty& property : properties)
+    {
+      if (property.name == name)
+        return &property.values;
+    }
+  }
+  return nullptr;
+}
+
+/// A colour channel as VTK's PLY reader stores it: an unsigned char (a
+/// value out of range is clamped, NaN is 0).
+unsigned char colorChannel(double value)
+{
+  return std::isnan(value) ? 0 : static_cast<unsigned char>(std::clamp(value, 0.0, 255.0));
+}
+
+/// An array of the named properties, one component each (nullptr unless
+/// every component is there).
+template <class ArrayType>
+vtkSmartPointer<ArrayType> propertyArray(const std::vector<cmp::MeshFileProperty>& properties, const char* arrayName,
+  std::initializer_list<std::initializer_list<const char*>> components)
+{
+  std::vector<const std::vector<double>*> columns;
+  for (const auto& names : components)
+  {
+    columns.push_back(propertyValues(properties, names));
+    if (!columns.back())
+      return nullptr;
+  }
+  auto array = vtkSmartPointer<ArrayType>::New();
+  array->SetName(arrayName);
+  array->SetNumberOfComponents(static_cast<int>(columns.size()));
+  array->SetNumberOfTuples(static_cast<vtkIdType>(columns[0]->size()));
+  for (std::size_t c = 0; c < columns.size(); ++c)
+  {
+    for (std::size_t i = 0; i < columns[c]->size(); ++i)
+    {
+      const double value = (*columns[c])[i];
+      if constexpr (std::is_same_v<ArrayType, vtkUnsignedCharArray>)
+        array->SetTypedComponent(static_cast<vtkIdType>(i), static_cast<int>(c), colorChannel(value));
+      else
+        array->SetTypedComponent(static_cast<vtkIdType>(i), static_cast<int>(c), static_cast<float>(value));
+    }
+  }
+  return array;
+}
+
+/// The PLY attributes VTK 9.2's PLY reader kept, with its names and types:
+/// point `Normals` (nx ny nz), point colours `RGB` or `RGBA` (red green blue
+/// [alpha], or diffuse_red ...), point `TCoords` (u v or texture_u
+/// texture_v), and face colours `RGB` on every triangle of the face.
+void addPLYAttributes(const cmp::MeshFileData& data, vtkPolyData* surface)
+{
+  vtkNew<vtkPointData> filePoints;
+  const auto& points = data.pointProperties;
+  if (auto normals = propertyArray<vtkFloatArray>(points, "Normals", { { "nx" }, { "ny" }, { "nz" } }))
+    filePoints->SetNormals(normals);
+  auto colors = propertyArray<vtkUnsignedCharArray>(points, "RGBA",
+    { { "red", "diffuse_red" }, { "green", "diffuse_green" }, { "blue", "diffuse_blue" }, { "alpha" } });
+  if (!colors)
+    colors = propertyArray<vtkUnsignedCharArray>(
+      points, "RGB", { { "red", "diffuse_red" }, { "green", "diffuse_green" }, { "blue", "diffuse_blue" } });
+  if (colors)
+    filePoints->SetScalars(colors);
+  auto tcoords = propertyArray<vtkFloatArray>(points, "TCoords", { { "u" }, { "v" } });
+  if (!tcoords)
+    tcoords = propertyArray<vtkFloatArray>(points, "TCoords", { { "texture_u" }, { "texture_v" } });
+  if (tcoords)
+    filePoints->SetTCoords(tcoords);
+  if (filePoints->GetNumberOfArrays() > 0)
+    copyWeldedPointData(filePoints, data.fileToMeshPoint, surface);
+  if (auto faceColors = propertyArray<vtkUnsignedCharArray>(
+        data.triangleProperties, "RGB", { { "red" }, { "green" }, { "blue" } }))
+    surface->GetCellData()->SetScalars(faceColors);
 }
 
 void addTextureCoordinates(const cmp::MeshFileData& data, vtkPolyData* output)
@@ -206,6 +316,8 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
     status = cmp::readOFF(this->FileName, data);
   else if (ext == "obj")
     status = cmp::readOBJ(this->FileName, data);
+  else if (ext == "ply")
+    status = cmp::readPLY(this->FileName, data);
   else
   {
     status = readWithVTK(this->FileName, ext, fromVTK);
@@ -227,6 +339,8 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   }
   if (!data.cornerTexCoords.empty())
     addTextureCoordinates(data, surface);
+  if (!data.pointProperties.empty() || !data.triangleProperties.empty())
+    addPLYAttributes(data, surface);
   if (welded > 0)
   {
     auto map = vtkSmartPointer<vtkIdTypeArray>::New();

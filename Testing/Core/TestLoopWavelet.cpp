@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -360,34 +359,21 @@ TEST(LoopWavelet, RejectsBadInput)
   EXPECT_NE(other.synthesize(coefficients, values).message().find("level"), std::string::npos);
 }
 
-TEST(LoopWavelet, Level6AnalysisAndSynthesisOfARealBaseDomainAreFast)
+// Its speed is measured by the benchmark's `wavelet` stage (wavelet_seconds),
+// not asserted here: a test must not fail on a busy machine.
+TEST(LoopWavelet, Level6AnalysisAndSynthesisOfARealBaseDomainAreInverses)
 {
   CMP_REQUIRE_SHARED_DATA();
   const BaseDomain domain = test::realBaseDomain("381");
   ASSERT_GT(domain.mesh.vertexCount(), 0);
   SemiRegularMesh mesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 6, mesh).ok());
-  const auto start = std::chrono::steady_clock::now();
   LoopWaveletTransform transform;
   ASSERT_TRUE(transform.build(mesh).ok());
-  const auto built = std::chrono::steady_clock::now();
   const Eigen::MatrixXd positions = spherePositions(domain, mesh);
   WaveletCoefficients coefficients;
   Eigen::MatrixXd back;
-  double fastest = 1e9;
-  for (int run = 0; run < 3; ++run)
-  {
-    const auto runStart = std::chrono::steady_clock::now();
-    ASSERT_TRUE(transform.analyze(positions, DetailFrame::Local, coefficients).ok());
-    ASSERT_TRUE(transform.synthesize(coefficients, back).ok());
-    fastest = std::min(fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count());
-  }
+  ASSERT_TRUE(transform.analyze(positions, DetailFrame::Local, coefficients).ok());
+  ASSERT_TRUE(transform.synthesize(coefficients, back).ok());
   EXPECT_LT(relativeDifference(back, positions), 1e-12);
-  std::cout << "level 6: " << domain.mesh.triangleCount() << " base triangles, " << mesh.triangles.size()
-            << " triangles, " << mesh.vertexCount() << " vertices; build "
-            << std::chrono::duration<double>(built - start).count() << " s, analysis + synthesis (local frames) "
-            << fastest << " s\n";
-#if !defined(__SANITIZE_ADDRESS__)
-  EXPECT_LT(fastest, 0.2);
-#endif
 }

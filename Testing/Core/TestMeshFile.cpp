@@ -27,13 +27,70 @@ TEST(MeshFile, ReportsGarbageAndTruncatedOFF)
   Status s = readOFF(writeTempFile("garbage.off", "hello world\n"), data);
   EXPECT_NE(s.message().find("not an OFF file"), std::string::npos) << s.message();
   s = readOFF(writeTempFile("short.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n"), data);
-  EXPECT_NE(s.message().find("file ends after 2 of 4 points"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find(":2: the header claims 4 points but the file has room for at most 2"), std::string::npos)
+    << s.message();
+  s = readOFF(writeTempFile("short2.off", "OFF\n4 4 0\n0.0 0.0 0.0\n1.0 0.0 0.0\n"), data);
+  EXPECT_NE(s.message().find(":4: the file ends after 2 of the 4 points the header (line 2) claims"), std::string::npos)
+    << s.message();
   s = readOFF(writeTempFile("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), data);
   EXPECT_NE(s.message().find(":6: vertex index 7 out of range"), std::string::npos) << s.message();
   s = readOFF("/nonexistent/mesh.off", data);
   EXPECT_NE(s.message().find("cannot open '/nonexistent/mesh.off'"), std::string::npos) << s.message();
   s = readOFF(writeTempFile("binary.off", std::string("OFF\0\1\2", 6)), data);
   EXPECT_NE(s.message().find("is not a text file"), std::string::npos) << s.message();
+}
+
+TEST(MeshFile, BoundsTheOFFCountsByTheFileSize)
+{
+  // The header alone used to make readOFF reserve 2^31 points and abort
+  // with std::bad_alloc.
+  MeshFileData data;
+  Status s = readOFF(writeTempFile("huge.off", "OFF\n2147483648 0 0\n"), data);
+  EXPECT_NE(s.message().find("huge.off:2: the header claims 2147483648 points but the file has room for at most 0"),
+    std::string::npos)
+    << s.message();
+  s = readOFF(writeTempFile("huge1.off", "OFF 1e300 1 0\n0 0 0\n"), data);
+  EXPECT_NE(s.message().find("huge1.off:1: the header claims 1e+300 points but the file has room for at most 1"),
+    std::string::npos)
+    << s.message();
+  s = readOFF(writeTempFile("faces.off", "OFF\n3 2147483647 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), data);
+  EXPECT_NE(s.message().find("faces.off:2: the header claims 2147483647 faces but the file has room for at most 1 "
+                             "after its 3 points"),
+    std::string::npos)
+    << s.message();
+  s = readOFF(writeTempFile("negative.off", "OFF\n-3 1 0\n"), data);
+  EXPECT_NE(s.message().find("negative.off:2: invalid vertex or face count"), std::string::npos) << s.message();
+}
+
+TEST(MeshFile, BlamesMissingOFFPointsNotFaces)
+{
+  MeshFileData data;
+  // The octahedron's header claims one point more than it lists: its first
+  // face is read as point 6 and the file seems to end in the faces.
+  const std::string octahedron = "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                                 "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+  ASSERT_TRUE(readOFF(writeTempFile("octahedron.off", octahedron), data).ok());
+  std::string text = octahedron;
+  text.replace(text.find("6 8"), 3, "7 8");
+  Status s = readOFF(writeTempFile("missing.off", text), data);
+  EXPECT_NE(s.message().find("missing.off:2: the header claims 7 points but the file lists only 6: points are "
+                             "missing (line 9, a face, was read as point 6)"),
+    std::string::npos)
+    << s.message();
+  // Genuinely missing faces are still reported as faces.
+  text = octahedron;
+  text.resize(text.rfind("3 "));
+  s = readOFF(writeTempFile("nofaces.off", text), data);
+  EXPECT_NE(s.message().find("nofaces.off:2: the header claims 8 faces but the file has room for at most 7 after its "
+                             "6 points"),
+    std::string::npos)
+    << s.message();
+  text += "3 0 3 5            \n"; // room enough, but a face short
+  text.replace(text.find("6 8"), 3, "6 9");
+  s = readOFF(writeTempFile("nofaces2.off", text), data);
+  EXPECT_NE(s.message().find("nofaces2.off:16: the file ends after 8 of the 9 faces the header (line 2) claims"),
+    std::string::npos)
+    << s.message();
 }
 
 TEST(MeshFile, ReadsOBJWithPerCornerTexCoordsAcrossASeam)

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -329,34 +328,19 @@ TEST(SurfaceDistance, EmptyMeshes)
   EXPECT_EQ(surfaceDistance(empty, empty).hausdorff(), 0.0);
 }
 
+// The tree's speed is measured by the benchmark (remesh_distance stage,
+// distance_seconds), not asserted here; a brute-force scan would take
+// minutes and hit the test's timeout.
 TEST(SurfaceDistance, HundredThousandQueriesOnALargeSphere)
 {
   const TriangleMesh mesh = test::sphere(7);
   ASSERT_EQ(mesh.triangleCount(), 131072);
   const std::vector<Vec3> queries = randomQueries(100000, 5);
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
   const ClosestPointQuery query(mesh);
-  const Clock::time_point built = Clock::now();
   double total = 0.0;
   for (const Vec3& p : queries)
     total += query.closest(p).distance;
-  const Clock::time_point done = Clock::now();
-  const double buildSeconds = std::chrono::duration<double>(built - start).count();
-  const double querySeconds = std::chrono::duration<double>(done - built).count();
-  std::cout << "131072 triangles: tree built in " << buildSeconds << " s, 100000 queries in " << querySeconds
-            << " s\n";
   EXPECT_TRUE(std::isfinite(total));
-  // A brute-force scan (1.3e10 point-triangle tests) takes minutes in a
-  // release build and hours under AddressSanitizer, which slows the tree
-  // down some 15 times (25 s seen on a loaded machine): only a tree gets
-  // under these bounds.
-#if defined(__SANITIZE_ADDRESS__)
-  const double bound = 150.0;
-#else
-  const double bound = 20.0;
-#endif
-  EXPECT_LT(buildSeconds + querySeconds, bound);
   // Spot-check the large tree against the brute force.
   const std::vector<Vec3> few(queries.begin(), queries.begin() + 20);
   EXPECT_EQ(countMismatches(mesh, few), 0);

@@ -8,12 +8,21 @@
 #include <vtkFloatArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkCellArray.h>
+#include <vtkPLYReader.h>
+#include <vtkPLYWriter.h>
+#include <vtkPoints.h>
 #include <vtkSTLWriter.h>
+#include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
+
+#include <cmp/io/VTPCheck.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 using namespace cmp::test;
 
@@ -61,7 +70,9 @@ TEST(SurfaceReader, ReportsMissingGarbageAndUnknownFiles)
   readSurface(writeTempFile("garbage.off", "this is not a mesh\n"), &result);
   EXPECT_NE(result.error.find("not an OFF file"), std::string::npos) << result.error;
   readSurface(writeTempFile("garbage.ply", "ply\nformat nonsense\n"), &result);
-  EXPECT_NE(result.error.find("cannot read"), std::string::npos) << result.error;
+  EXPECT_NE(result.error.find("garbage.ply:2: expected 'format ascii|binary_little_endian|binary_big_endian 1.0'"),
+    std::string::npos)
+    << result.error;
   readSurface(writeTempFile("garbage.stl", std::string(10, '\x01')), &result);
   EXPECT_FALSE(result.succeeded);
   // VTK's own reason is kept, not just "cannot read".
@@ -205,4 +216,200 @@ TEST(LandmarksFromFile, ChecksTheSurfaceFirst)
   assign->SetLandmarkFile(writeTempFile("lm-open.txt", "0\n1\n").c_str());
   const RunResult result = run(assign);
   EXPECT_NE(result.error.find("open surface: 3 boundary edges"), std::string::npos) << result.error;
+}
+
+namespace
+{
+
+// What VTK's own reader makes of a PLY file, triangulated as the surface
+// reader used to.
+vtkSmartPointer<vtkPolyData> readWithVTKPLYReader(const std::string& path)
+{
+  vtkNew<vtkPLYReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(reader->GetOutputPort());
+  triangulate->Update();
+  return triangulate->GetOutput();
+}
+
+void expectSameSurface(vtkPolyData* actual, vtkPolyData* expected, const std::string& what)
+{
+  ASSERT_EQ(actual->GetNumberOfPoints(), expected->GetNumberOfPoints()) << what;
+  ASSERT_EQ(actual->GetNumberOfPolys(), expected->GetNumberOfPolys()) << what;
+  int differentPoints = 0, differentTriangles = 0;
+  for (vtkIdType p = 0; p < actual->GetNumberOfPoints(); ++p)
+  {
+    double a[3], b[3];
+    actual->GetPoint(p, a);
+    expected->GetPoint(p, b);
+    differentPoints += (a[0] != b[0] || a[1] != b[1] || a[2] != b[2]) ? 1 : 0;
+  }
+  vtkNew<vtkIdList> a, b;
+  for (vtkIdType c = 0; c < actual->GetNumberOfPolys(); ++c)
+  {
+    actual->GetCellPoints(c, a);
+    expected->GetCellPoints(c, b);
+    bool same = a->GetNumberOfIds() == b->GetNumberOfIds();
+    for (vtkIdType k = 0; same && k < a->GetNumberOfIds(); ++k)
+      same = a->GetId(k) == b->GetId(k);
+    differentTriangles += same ? 0 : 1;
+  }
+  EXPECT_EQ(differentPoints, 0) << what;
+  EXPECT_EQ(differentTriangles, 0) << what;
+}
+
+std::string expectReadError(const std::string& name, const std::string& text)
+{
+  RunResult result;
+  vtkSmartPointer<vtkPolyData> surface = readSurface(writeTempFile(name, text), &result);
+  EXPECT_FALSE(result.succeeded) << name;
+  EXPECT_EQ(surface->GetNumberOfPoints(), 0) << name;
+  EXPECT_NE(result.error.find(name), std::string::npos) << "the message names the file: " << result.error;
+  return result.error;
+}
+
+} // namespace
+
+TEST(SurfaceReader, ReadsPLYAsVTKsReaderDid)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  for (const std::string model : { "/spot/spot.obj", "/shrec07-fourleg/381.off" })
+  {
+    vtkSmartPointer<vtkPolyData> surface = readSurface(sharedDataDir() + model);
+    for (const bool binary : { false, true })
+    {
+      const std::string path = tempPath(std::string("vtk-") + (binary ? "binary" : "ascii") + ".ply");
+      vtkNew<vtkPLYWriter> writer;
+      writer->SetInputData(surface);
+      writer->SetFileName(path.c_str());
+      if (binary)
+        writer->SetFileTypeToBinary();
+      else
+        writer->SetFileTypeToASCII();
+      ASSERT_TRUE(writer->Write()) << path;
+      expectSameSurface(readSurface(path), readWithVTKPLYReader(path), model + (binary ? " binary" : " ASCII"));
+    }
+  }
+}
+
+TEST(SurfaceReader, RefusesPLYFilesThatCrashedVTKsReader)
+{
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string points = "0.0 0.0 0.0\n1.0 0.0 0.0\n0.0 1.0 0.0\n0.0 0.0 1.0\n";
+  EXPECT_NE(expectReadError("range.ply", header + points + "3 0 2 1\n3 0 1 3\n3 0 3 9\n3 1 2 3\n")
+              .find("range.ply:16: vertex index 9 out of range"),
+    std::string::npos);
+  EXPECT_NE(expectReadError("short.ply", header + "0.0 0.0 0.0\n1.0\n0.0 1.0 0.0\n0.0 0.0 1.0\n3 0 2 1\n3 0 1 3\n"
+                                                  "3 0 3 2\n3 1 2 3\n")
+              .find("short.ply:11: point 1 has 1 values, too few"),
+    std::string::npos);
+  EXPECT_NE(expectReadError("noface.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                          "property float y\nproperty float z\nend_header\n0 0 0\n")
+              .find("noface.ply:7: no 'face' element"),
+    std::string::npos);
+  // Binary: four float points and a face whose uchar count says 200.
+  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  binary += std::string(48, '\0') + std::string(1, '\xc8') + std::string(12, '\0');
+  EXPECT_NE(expectReadError("damaged.ply", binary).find("list 'vertex_indices' announces 200 values"),
+    std::string::npos);
+}
+
+TEST(SurfaceReader, RefusesHostileCountsInOFFSTLAndVTP)
+{
+  EXPECT_NE(expectReadError("huge.off", "OFF\n2147483648 0 0\n").find("huge.off:2: the header claims 2147483648 points"),
+    std::string::npos);
+  // A binary STL whose header starts with "solid" is still binary to VTK.
+  std::string stl = "solid looks like text";
+  stl += std::string(80 - stl.size(), ' ') + std::string("\xff\xff\xff\x7f", 4);
+  for (int k = 0; k < 50; ++k)
+    stl += std::string("\x01\x80\x00\x3f", 4);
+  EXPECT_NE(expectReadError("solid.stl", stl).find("the header announces 2147483647 triangles"), std::string::npos);
+  const std::string vtp = "<VTKFile type=\"PolyData\" version=\"1.0\">\n<PolyData>\n<FieldData>\n"
+                          "<Array type=\"String\" Name=\"S\" NumberOfTuples=\"2147483648\" format=\"ascii\">"
+                          "97 0</Array>\n</FieldData>\n<Piece NumberOfPoints=\"0\"></Piece>\n</PolyData>\n"
+                          "</VTKFile>\n";
+  EXPECT_NE(expectReadError("strings.vtp", vtp).find("strings.vtp:4: Array 'S' needs 2147483648 values"),
+    std::string::npos);
+  std::string unknown = vtp;
+  unknown.replace(unknown.find("type=\"String\""), 13, "type=\"Str1ng\"");
+  EXPECT_NE(expectReadError("type.vtp", unknown).find("type.vtp:4: Array 'S' has type 'Str1ng'"),
+    std::string::npos);
+}
+
+TEST(SurfaceReader, TheVTPCheckAcceptsEveryModeVTKWrites)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  vtkSmartPointer<vtkPolyData> spot = readLandmarked(sharedDataDir() + "/spot/spot.obj",
+    sharedDataDir() + "/spot/spot_shrec07.pinned");
+  ASSERT_GT(spot->GetFieldData()->GetNumberOfArrays(), 0) << "field data, a string array among them";
+  struct Mode
+  {
+    const char* name;
+    int dataMode;
+    bool compressed;
+    bool base64;
+  };
+  for (const Mode& mode : { Mode{ "ascii", vtkXMLWriter::Ascii, false, false },
+         Mode{ "binary", vtkXMLWriter::Binary, false, false }, Mode{ "binary-zlib", vtkXMLWriter::Binary, true, false },
+         Mode{ "appended", vtkXMLWriter::Appended, false, false },
+         Mode{ "appended-zlib", vtkXMLWriter::Appended, true, false },
+         Mode{ "appended-base64", vtkXMLWriter::Appended, true, true } })
+  {
+    for (const int headerType : { vtkXMLWriter::UInt32, vtkXMLWriter::UInt64 })
+    {
+      const std::string path = tempPath(std::string("spot-") + mode.name + std::to_string(headerType) + ".vtp");
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetInputData(spot);
+      writer->SetFileName(path.c_str());
+      writer->SetDataMode(mode.dataMode);
+      writer->SetHeaderType(headerType);
+      writer->SetEncodeAppendedData(mode.base64);
+      if (!mode.compressed)
+        writer->SetCompressorTypeToNone();
+      ASSERT_TRUE(writer->Write()) << path;
+      const cmp::Status s = cmp::checkVTPFile(path);
+      EXPECT_TRUE(s.ok()) << mode.name << ": " << s.message();
+    }
+  }
+}
+
+TEST(SurfaceReader, KeepsThePLYAttributesVTKsReaderKept)
+{
+  // A tetrahedron with normals, colours with alpha, texture coordinates and
+  // a quality per point, a colour per face, and one face a quad.
+  const std::string text = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                           "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+                           "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+                           "property float u\nproperty float v\nproperty float quality\nelement face 4\n"
+                           "property list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\n"
+                           "property uchar blue\nend_header\n"
+                           "0 0 0 -1 -1 -1 255 0 0 10 0.1 0.2 5\n1 0 0 1 0 0 0 255 0 20 0.3 0.4 6\n"
+                           "0 1 0 0 1 0 0 0 255 30 0.5 0.6 7\n0 0 1 0 0 1 9 9 9 40 0.7 0.8 8\n"
+                           "1 1 0 1 1 0 1 2 3 50 0.9 1.0 9\n"
+                           "4 0 2 4 1 10 20 30\n3 0 1 3 40 50 60\n3 1 4 3 70 80 90\n3 0 3 2 100 110 120\n";
+  const std::string path = writeTempFile("attributes.ply", text);
+  vtkSmartPointer<vtkPolyData> ours = readSurface(path);
+  vtkSmartPointer<vtkPolyData> theirs = readWithVTKPLYReader(path);
+  ASSERT_EQ(ours->GetNumberOfPoints(), 5);
+  ASSERT_EQ(ours->GetNumberOfPolys(), 5);
+  const auto expectSameArray = [](vtkDataArray* a, vtkDataArray* b, const std::string& name)
+  {
+    ASSERT_NE(a, nullptr) << name;
+    ASSERT_NE(b, nullptr) << name;
+    EXPECT_STREQ(a->GetName(), b->GetName());
+    EXPECT_EQ(a->GetDataType(), b->GetDataType()) << name;
+    ASSERT_EQ(a->GetNumberOfComponents(), b->GetNumberOfComponents()) << name;
+    ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples()) << name;
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+        EXPECT_EQ(a->GetComponent(i, c), b->GetComponent(i, c)) << name << " tuple " << i << " component " << c;
+  };
+  expectSameArray(ours->GetPointData()->GetNormals(), theirs->GetPointData()->GetNormals(), "Normals");
+  expectSameArray(ours->GetPointData()->GetScalars(), theirs->GetPointData()->GetScalars(), "RGBA");
+  expectSameArray(ours->GetPointData()->GetTCoords(), theirs->GetPointData()->GetTCoords(), "TCoords");
+  expectSameArray(ours->GetCellData()->GetScalars(), theirs->GetCellData()->GetScalars(), "cell RGB");
+  EXPECT_EQ(ours->GetPointData()->GetArray("quality"), nullptr) << "VTK's reader dropped other properties";
 }

@@ -230,7 +230,6 @@ TEST(WaveletDetailTransferFilter, FourLeggedDetailsOntoAnotherFourLeggedShape)
   vtkSmartPointer<vtkMultiBlockDataSet> remeshes = remesh(models, l0, 4);
   const Transfer t = transfer(remeshes, [](vtkCMPWaveletDetailTransfer* f) { f->SetLastCoarseLevel(2); });
   ASSERT_TRUE(t.result.succeeded) << t.result.error;
-  EXPECT_LT(fieldValue(t.shape, "TransferSeconds"), 1.0);
   const Transfer coarseAlone =
     transfer(remeshes, [](vtkCMPWaveletDetailTransfer* f) { f->SetDetailWeights({ 0, 0, 0, 0, 0 }); });
   ASSERT_TRUE(coarseAlone.result.succeeded) << coarseAlone.result.error;

@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numeric>
+#include <sstream>
 
 namespace cmp
 {
@@ -18,6 +21,16 @@ void fanTriangulate(const std::vector<int>& polygon, std::vector<Triangle>& tria
   {
     triangles.push_back({ polygon[0], polygon[k], polygon[k + 1] });
   }
+}
+
+// A count read as a double, written as an integer while it is one.
+std::string formatCount(double count)
+{
+  if (count >= 0 && count < 1e18 && count == std::floor(count))
+    return std::to_string(static_cast<long long>(count));
+  std::ostringstream text;
+  text << count;
+  return text.str();
 }
 
 void identityPointMap(MeshFileData& out)
@@ -38,6 +51,39 @@ std::string fileExtension(const std::string& path)
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
+
+namespace
+{
+
+// Fewest bytes an OFF record can take: a point is three numbers ("1-2-3"),
+// a face a count and three indices ("3 0 1 2"), each with its line break.
+constexpr std::size_t kMinimumOFFPointBytes = 6;
+constexpr std::size_t kMinimumOFFFaceBytes = 8;
+
+// True if `line` reads as an OFF face: integers only, the first one n >= 3
+// followed by exactly n more.
+bool looksLikeOFFFace(const std::string& line)
+{
+  const char* p = line.c_str();
+  char* end = nullptr;
+  const long n = std::strtol(p, &end, 10);
+  if (end == p || n < 3 || (*end != ' ' && *end != '\t'))
+    return false;
+  long count = 0;
+  while (true)
+  {
+    p = end;
+    std::strtol(p, &end, 10);
+    if (end == p)
+      break;
+    if (*end != '\0' && *end != ' ' && *end != '\t' && *end != '\r')
+      return false; // "0.5" and the like: a coordinate
+    ++count;
+  }
+  return count == n && std::string(p).find_first_not_of(" \t\r") == std::string::npos;
+}
+
+} // namespace
 
 Status readOFF(const std::string& path, MeshFileData& out)
 {
@@ -60,28 +106,70 @@ Status readOFF(const std::string& path, MeshFileData& out)
     if (!lines.next(counts, true) || parseNumbers(counts, header, 3) < 2)
       return Status::error(fileLine(path, lines.number()) + "expected 'vertex_count face_count edge_count'");
   }
+  const int headerLine = lines.number();
+  if (!(header[0] >= 0 && header[1] >= 0) || header[0] != std::floor(header[0]) || header[1] != std::floor(header[1]))
+    return Status::error(fileLine(path, headerLine) + "invalid vertex or face count");
+  // Bound the counts by what the rest of the file can hold before reserving
+  // memory for them: a hostile header must not exhaust memory.
+  const std::size_t rest = text.size() - std::min(text.size(), lines.offset()) + 1;
+  const std::size_t pointRoom = std::min<std::size_t>(rest / kMinimumOFFPointBytes, std::numeric_limits<int>::max());
+  if (header[0] > static_cast<double>(pointRoom))
+    return Status::error(fileLine(path, headerLine) + "the header claims " + formatCount(header[0]) +
+      " points but the file has room for at most " + std::to_string(pointRoom));
   const long pointCount = static_cast<long>(header[0]);
-  const long faceCount = static_cast<long>(header[1]);
-  if (pointCount < 0 || faceCount < 0 || header[0] != pointCount || header[1] != faceCount)
-    return Status::error(fileLine(path, lines.number()) + "invalid vertex or face count");
   out.mesh.points.reserve(pointCount);
   double xyz[3];
+  // The first of the trailing point lines that read as faces (-1 if none):
+  // when the header claims more points than the file lists, the faces are
+  // read as points and the file seems to end in the faces.
+  long firstFaceLikePoint = -1;
+  int firstFaceLikeLine = 0;
   for (long i = 0; i < pointCount; ++i)
   {
     if (!lines.next(line, true))
-      return Status::error(path + ": file ends after " + std::to_string(i) + " of " + std::to_string(pointCount) +
-        " points");
+      return Status::error(fileLine(path, lines.number()) + "the file ends after " + std::to_string(i) + " of the " +
+        std::to_string(pointCount) + " points the header (line " + std::to_string(headerLine) + ") claims");
     if (parseNumbers(line, xyz, 3) != 3)
       return Status::error(fileLine(path, lines.number()) + "expected three coordinates");
+    if (!looksLikeOFFFace(line))
+      firstFaceLikePoint = -1;
+    else if (firstFaceLikePoint < 0)
+    {
+      firstFaceLikePoint = i;
+      firstFaceLikeLine = lines.number();
+    }
     out.mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
+  // When the header claims more points than the file lists, its first faces
+  // were read as points: say so rather than blame the faces.
+  const auto missingPoints = [&]()
+  {
+    return Status::error(fileLine(path, headerLine) + "the header claims " + std::to_string(pointCount) +
+      " points but the file lists only " + std::to_string(firstFaceLikePoint) + ": points are missing (line " +
+      std::to_string(firstFaceLikeLine) + ", a face, was read as point " + std::to_string(firstFaceLikePoint) + ")");
+  };
+  const std::size_t faceRoom = std::min<std::size_t>(
+    (text.size() - std::min(text.size(), lines.offset()) + 1) / kMinimumOFFFaceBytes, std::numeric_limits<int>::max());
+  if (header[1] > static_cast<double>(faceRoom))
+  {
+    if (firstFaceLikePoint >= 0)
+      return missingPoints();
+    return Status::error(fileLine(path, headerLine) + "the header claims " + formatCount(header[1]) +
+      " faces but the file has room for at most " + std::to_string(faceRoom) + " after its " +
+      std::to_string(pointCount) + " points");
+  }
+  const long faceCount = static_cast<long>(header[1]);
   out.mesh.triangles.reserve(faceCount);
   std::vector<int> polygon;
   for (long f = 0; f < faceCount; ++f)
   {
     if (!lines.next(line, true))
-      return Status::error(path + ": file ends after " + std::to_string(f) + " of " + std::to_string(faceCount) +
-        " faces");
+    {
+      if (firstFaceLikePoint >= 0)
+        return missingPoints();
+      return Status::error(fileLine(path, lines.number()) + "the file ends after " + std::to_string(f) + " of the " +
+        std::to_string(faceCount) + " faces the header (line " + std::to_string(headerLine) + ") claims");
+    }
     const char* p = line.c_str();
     char* end = nullptr;
     const long n = std::strtol(p, &end, 10);

@@ -8,12 +8,21 @@
 namespace cmp
 {
 
-Status readTextFile(const std::string& path, std::string& text)
+Status readFileBytes(const std::string& path, std::string& bytes)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     return Status::error("cannot open '" + path + "'");
-  text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (in.bad())
+    return Status::error("cannot read '" + path + "'");
+  return {};
+}
+
+Status readTextFile(const std::string& path, std::string& text)
+{
+  if (Status s = readFileBytes(path, text); !s.ok())
+    return s;
   if (text.find('\0') != std::string::npos)
     return Status::error("'" + path + "' is not a text file");
   return {};

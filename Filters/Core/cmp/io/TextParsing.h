@@ -9,6 +9,9 @@
 namespace cmp
 {
 
+/// \brief Reads a whole file as bytes; a missing or unreadable file is an error.
+Status readFileBytes(const std::string& path, std::string& bytes);
+
 /// \brief Reads a whole text file; a missing, unreadable or binary file is an error.
 Status readTextFile(const std::string& path, std::string& text);
 
@@ -27,6 +30,9 @@ public:
   bool next(std::string& line, bool skipBlank = true);
   /// \brief 1-based number of the line last returned.
   int number() const { return number_; }
+  /// \brief Byte offset just past the line last returned (its line break
+  ///        included), so `text.size() - offset()` bytes remain, or one less.
+  std::size_t offset() const { return pos_; }
 
 private:
   const std::string& text_;

@@ -1,0 +1,46 @@
+#pragma once
+/// \file VTPCheck.h
+/// \brief A check of a VTK XML PolyData file (.vtp) before VTK's reader
+///        sees it, without VTK.
+
+#include <cmp/mesh/Status.h>
+
+#include <string>
+
+namespace cmp
+{
+
+/// \brief Refuses a `.vtp` file that VTK 9.2's `vtkXMLPolyDataReader` could
+///        crash on or exhaust memory with; accepts every file VTK writes.
+///
+/// Checks, naming the file and the line of the offending tag:
+/// - the XML is well formed as far as the reader relies on it: tags close in
+///   order, attributes are quoted, the file does not end inside a tag;
+/// - the root is `<VTKFile type="PolyData">` with a known `byte_order`,
+///   `header_type` (UInt32, UInt64) and `compressor`;
+/// - every `Piece` count (`NumberOfPoints`, `NumberOfPolys`, ...) and every
+///   array's (`DataArray`, and `Array` for strings) `NumberOfTuples` and
+///   `NumberOfComponents` is an integer;
+/// - every array has a type VTK knows (Int8 ... UInt64, Float32,
+///   Float64, String, Bit) and a format (ascii, binary, appended);
+/// - the values an array must hold (its `NumberOfTuples`, or the piece's
+///   point or cell count for point, cell and offset arrays, times its
+///   components; at least one byte per string) are present: as many ASCII
+///   values; in inline base64 data, as many bytes, and a block header that
+///   agrees with the bytes that follow; in appended data (raw or base64),
+///   a header inside the appended section and as many bytes after it, the
+///   section starting with `_` after blanks only. A compressed array must
+///   not claim more than 1032 times its compressed size (deflate's limit,
+///   also above LZ4's), or 65536 times for LZMA;
+/// - where the data can be read without decompressing (ASCII, uncompressed
+///   binary or appended): a string array holds exactly as many strings as
+///   it declares (VTK writes past the end of its array otherwise), and a
+///   cell array's last offset does not exceed the values its connectivity
+///   holds (VTK allocates the connectivity by it).
+///
+/// It does not decompress data, so a crafted compressed file can still
+/// carry a string count or a last offset that VTK trusts; nor does it check
+/// other values (for example connectivity ids): VTK's reader reports those.
+Status checkVTPFile(const std::string& path);
+
+} // namespace cmp
