@@ -184,6 +184,9 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False, fr
             "sweeps": int(value("MapSweeps")),
             "crossing_vertices": int(value("MapCrossingVertices")),
         }
+        if not model.report["straighten"]["map"]["applied"]:
+            reason = surface.GetFieldData().GetAbstractArray("FreeCurvesReason")
+            model.report["straighten"]["map"]["reason"] = reason.GetValue(0) if reason is not None else ""
     if not model.report["straighten"]["net_valid"]:
         raise StageError("the straightened net failed the layout check")
     model.parameterized = surface

@@ -39,6 +39,10 @@ def print_summary(models, report):
         print("%-*s  %8s  %8.3f  %11s  %12s  %16s  %s"
               % (width, model.name, r.get("vertices", "-"), seconds, net, straight, hausdorff, result))
     for model in models:
+        line = free_curves_summary(model)
+        if line:
+            print(line)
+    for model in models:
         line = distance_summary(model, report)
         if line:
             print(line)
@@ -46,6 +50,16 @@ def print_summary(models, report):
         line = fold_summary(model, report.get("remesh", {}).get("fold_repair", True))
         if line:
             print(line)
+
+
+def free_curves_summary(model):
+    """A line for a model whose curves were asked to move with the map but
+    kept their straightened places, and why (None otherwise)."""
+    free = model.report.get("straighten", {}).get("map")
+    if not free or free.get("applied", True):
+        return None
+    return ("%s: the curves kept their straightened places (free curves not applied: %s)"
+            % (model.name, free.get("reason") or "no reason given"))
 
 
 def _print_from_source(stage, title, how=""):

@@ -284,6 +284,7 @@ int vtkCMPNetStraightener::RequestData(
       cmp::bridge::setFieldValue(field, "MapDistortionAfter", freeCurves.map.distortionAfter);
       cmp::bridge::setFieldValue(field, "MapSweeps", freeCurves.map.sweeps);
       cmp::bridge::setFieldValue(field, "MapCrossingVertices", freeCurves.map.crossingVertices);
+      cmp::bridge::setFieldString(field, "FreeCurvesReason", freeCurves.applied ? "" : freeCurves.reason);
     }
     // The outputs are built anew: keep the model's name for the remesher.
     cmp::bridge::copySourceFile(input, output);

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace cmp;
@@ -216,4 +217,54 @@ TEST(GlobalMap, CuttingAlongThePatchMapsRebuildsAnEquivalentLayout)
   EXPECT_NEAR(netLength(cut.net), netLength(s.straight.net), 0.01 * netLength(s.straight.net));
   EXPECT_EQ(cutAlongMap(s.straight, s.domain, charts, {}, cut, map).message().find("does not belong") == std::string::npos,
     false);
+}
+
+TEST(GlobalMap, FreeCurvesMoveTheCurvesOfModelsWhoseL0HasLandmarksOfHighAndLowValence)
+{
+  // L0 from 389 and from 384 have landmarks of valence 3 and of 10 or 11:
+  // the map spreads the triangles round them all round their stars, across
+  // the seam any one chart of a star must have. The cut once failed on
+  // every model with L0 from 389 (edge 41, between landmarks of valence
+  // 10), and on 389 with L0 from 384 (near a landmark of valence 3, where
+  // only each triangle's own chart of the star reads the map right).
+  CMP_REQUIRE_SHARED_DATA();
+  const std::vector<std::pair<const char*, std::vector<const char*>>> cases{ { "389", { "389", "385" } },
+    { "384", { "389" } } };
+  for (const auto& [from, models] : cases)
+  {
+    SCOPED_TRACE(std::string("L0 from ") + from);
+    const test::LandmarkedModel source = test::landmarkedRealModel(from);
+    BaseDomain domain;
+    ASSERT_TRUE(buildBaseDomain(source.data.mesh, source.landmarks, domain).ok());
+    int lowest = 6, highest = 6;
+    for (int v = 0; v < domain.mesh.vertexCount(); ++v)
+    {
+      int valence = 0;
+      for (const Triangle& t : domain.mesh.triangles)
+        valence += std::count(t.begin(), t.end(), v) > 0 ? 1 : 0;
+      lowest = std::min(lowest, valence);
+      highest = std::max(highest, valence);
+    }
+    EXPECT_EQ(lowest, 3);
+    EXPECT_GE(highest, 10);
+    for (const char* name : models)
+    {
+      SCOPED_TRACE(name);
+      const test::LandmarkedModel model = test::landmarkedRealModel(name);
+      TracedNet traced;
+      StraightenedNet straight;
+      PatchParameterization map;
+      ASSERT_TRUE(traceFeatureNet(model.data.mesh, model.landmarks, domain, traced).ok());
+      ASSERT_TRUE(straightenNet(traced, domain, straight).ok());
+      ASSERT_TRUE(parameterizePatches(straight.net, domain, map).ok());
+      StraightenedNet moved;
+      PatchParameterization movedMap;
+      FreeCurvesReport report;
+      ASSERT_TRUE(freeCurves(straight, domain, map, {}, {}, moved, movedMap, &report).ok());
+      EXPECT_TRUE(report.applied) << report.reason;
+      EXPECT_EQ(movedMap.flippedTriangles, 0);
+      for (const std::string& problem : validateLayout(toLabelledSurface(moved.net, domain), toBaseTriangles(domain)))
+        ADD_FAILURE() << problem;
+    }
+  }
 }

@@ -927,8 +927,26 @@ def case_free_curves(tmp):
             check(figures["distortion_after"] < 0.95 * figures["distortion_before"],
                   "%s: map distortion %g -> %g" % (name, figures["distortion_before"], figures["distortion_after"]))
             check(figures["crossing_vertices"] > 0, name + ": no vertex crossed a curve")
+            check("reason" not in figures, name + ": a reason for curves that were moved")
             print("%s: map distortion %g -> %g, %d vertices crossed a curve"
                   % (name, figures["distortion_before"], figures["distortion_after"], figures["crossing_vertices"]))
+        check("kept their straightened places" not in stdout, "a console line for curves that were moved " + str(flag))
+    # A model whose curves stay where straightening put them (the cut
+    # along the map failed) gets a console line with the reason report.json
+    # has.
+    summary = package_module("summary")
+
+    class Kept:
+        name = "kept"
+        report = {"straighten": {"map": {"applied": False, "reason": "cutting along the map: the preimage of L0's "
+                                         "edge 27 (landmarks 12 to 20): it crosses another curve after 134 steps"}}}
+
+    check_equal(summary.free_curves_summary(Kept()),
+                "kept: the curves kept their straightened places (free curves not applied: cutting along the map: "
+                "the preimage of L0's edge 27 (landmarks 12 to 20): it crosses another curve after 134 steps)",
+                "console line for curves kept")
+    Kept.report["straighten"]["map"]["applied"] = True
+    check(summary.free_curves_summary(Kept()) is None, "console line for curves moved")
 
 
 def case_relax_samples(tmp):

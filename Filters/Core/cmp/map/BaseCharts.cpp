@@ -272,6 +272,27 @@ bool StarUnfolding::locate(const std::vector<Sector>& chain, const BasePoint& po
   return false;
 }
 
+bool StarUnfolding::polar(const BasePoint& point, double& radius, double& angle) const
+{
+  Vec2 at;
+  if (!triangles_ || !locate(ccw_, point, at, angle))
+    return false;
+  radius = (at - centre_).norm();
+  return true;
+}
+
+Vec2 StarUnfolding::atPolar(double radius, double angle) const
+{
+  const Vec2 along = edge_.normalized();
+  return centre_ + radius * Vec2(std::cos(angle) * along.x() - std::sin(angle) * along.y(),
+                              std::sin(angle) * along.x() + std::cos(angle) * along.y());
+}
+
+double StarUnfolding::turn() const
+{
+  return static_cast<double>(ccw_.size()) * kSixthTurn;
+}
+
 bool StarUnfolding::position(const BasePoint& point, Vec2& result) const
 {
   if (!triangles_)

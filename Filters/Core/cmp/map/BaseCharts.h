@@ -86,6 +86,21 @@ public:
   ///        turn from the edge both ways.
   bool position(const BasePoint& point, Vec2& result) const;
 
+  /// \brief `point`'s distance from the centre and its angle round it,
+  ///        counter-clockwise from the edge (0 to `turn()`); false if it
+  ///        lies outside the closed star.
+  bool polar(const BasePoint& point, double& radius, double& angle) const;
+
+  /// \brief The point at `radius` from the centre and `angle`
+  ///        counter-clockwise from the edge, in the anchor's frame: the
+  ///        star unfolded on and on (past `turn()` it laps over itself
+  ///        above valence 6 and leaves a gap below), so that any arc of it
+  ///        shorter than a turn is drawn as L0 has it.
+  Vec2 atPolar(double radius, double angle) const;
+
+  /// \brief The star's whole angle round its centre: valence sixths of a turn.
+  double turn() const;
+
 private:
   struct Sector
   {

@@ -18,6 +18,9 @@ constexpr double kTwoPi = 6.283185307179586;
 /// Cutting along a map, a curve crossing an edge this close to one of its
 /// ends goes through that end instead (which then moves onto the curve).
 constexpr double kMapSnap = 1e-3;
+/// Cutting along a map, within this distance (in base edge lengths) of a
+/// curve's end the walk reads each surface triangle in a chart of its own.
+constexpr double kEndRadius = 0.25;
 /// A vertex beside a cut curve may lie this far (in barycentric units) on
 /// its far side in the map (a crossing moved off an edge's end); it is put
 /// back on the curve's side, and the patch's map checked for flips.
@@ -84,6 +87,7 @@ struct WalkEvent
   int vertex = -1;
   int u = -1, v = -1;
   double t = 0.0;
+  double along = 0.0; ///< Cutting along a map: the point's share of the way from the curve's start to its end.
 };
 
 class Straightener
@@ -159,8 +163,10 @@ public:
   /// Cuts `in`'s surface anew along the preimages of L0's edges under the
   /// map `points` (one per vertex of `in.net.mesh`), and gives every
   /// vertex its place in its patch's base triangle.
+  /// With `endCharts`, the walk reads the triangles near each curve's end
+  /// in the end's star drawn for each alone (`chartOf()`).
   Status recut(const StraightenedNet& in, const BaseCharts& charts, std::vector<BasePoint> points,
-    PatchParameterization& map)
+    PatchParameterization& map, bool endCharts)
   {
     out_ = in;
     charts_ = &charts;
@@ -182,8 +188,6 @@ public:
       const int a = net_.baseEdges[e][0], b = net_.baseEdges[e][1];
       const int left = net_.leftTriangle[e];
       // The rhombus of the edge's two triangles, in the left one's frame.
-      uv_.assign(mesh.vertexCount(), Vec2::Zero());
-      std::vector<char> charted(mesh.vertexCount(), 0);
       const Triangle& lt = domain_.mesh.triangles[left];
       // Beyond the left triangle's charts, through the right one's (an
       // edge away, so laid the one way): the rhombus and all round it.
@@ -194,11 +198,25 @@ public:
       // them (the left triangle's own charts open it elsewhere).
       StarUnfolding aroundA, aroundB;
       const bool starA = aroundA.build(domain_, left, a, b), starB = aroundB.build(domain_, left, b, a);
+      const auto touchesEnd = [&](const BasePoint& p) {
+        const Triangle& tri = domain_.mesh.triangles[p.triangle];
+        return (starA && std::find(tri.begin(), tri.end(), a) != tri.end()) ||
+          (starB && std::find(tri.begin(), tri.end(), b) != tri.end());
+      };
+      uv_.assign(mesh.vertexCount(), Vec2::Zero());
+      std::vector<char> charted(mesh.vertexCount(), 0);
       for (int v = 0; v < mesh.vertexCount(); ++v)
       {
         Vec2 inRight;
         if ((starA && aroundA.position(points_[v], uv_[v])) || (starB && aroundB.position(points_[v], uv_[v])))
           charted[v] = 1;
+        // A point round either end that its star leaves out (more than
+        // half a turn from the edge, where a valence above 6 laps the star
+        // over itself) stays out: the left triangle's charts would lay it
+        // on another sheet, over the triangles the curve crosses, and the
+        // walk could take a triangle of that sheet.
+        else if (touchesEnd(points_[v]))
+          continue;
         else if (charts.inFrame(left, points_[v], uv_[v]))
           charted[v] = 1;
         else if (rightCorners && charts.inFrame(right, points_[v], inRight))
@@ -223,18 +241,24 @@ public:
       std::vector<WalkEvent> events;
       std::vector<int> curve;
       const int from = net_.landmarkVertex[a], to = net_.landmarkVertex[b];
-      if (!walk(from, to, kMapSnap, events) || !cut(from, events, curve))
+      endStar_ = starB && endCharts ? &aroundB : nullptr;
+      const bool walked = walk(from, to, kMapSnap, events);
+      endStar_ = nullptr;
+      if (!walked)
+        return Status::error("cutting along the map: the preimage of L0's edge " + std::to_string(e) + " (landmarks " +
+          std::to_string(a) + " to " + std::to_string(b) + "): " + walkFailure_ + " after " +
+          std::to_string(events.size()) + " steps");
+      if (!cut(from, events, curve))
         return Status::error("cutting along the map: the preimage of L0's edge " + std::to_string(e) +
-          " leaves the map's chart");
-      // Curve points sit on the edge exactly.
+          " crosses an edge the cut removed");
+      // Curve points sit on the edge exactly, where the walk met them
+      // (curve point i is event i - 1).
       const int ia = static_cast<int>(std::find(lt.begin(), lt.end(), a) - lt.begin());
       const int ib = static_cast<int>(std::find(lt.begin(), lt.end(), b) - lt.begin());
-      const Vec2 pa = BaseCharts::corner(ia), pb = BaseCharts::corner(ib);
       for (std::size_t i = 1; i + 1 < curve.size(); ++i)
       {
         const int v = curve[i];
-        const Vec2 at = uv_[v];
-        const double lambda = std::clamp((at - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
+        const double lambda = events[i - 1].along;
         std::array<double, 3> c{ 0.0, 0.0, 0.0 };
         c[ia] = 1.0 - lambda;
         c[ib] = lambda;
@@ -311,7 +335,9 @@ private:
         return Status::error("cutting along the map: point " + std::to_string(v) + " is not in its patch's chart");
       std::array<double, 3> c = BaseCharts::barycentric({ patch, at });
       if (std::min({ c[0], c[1], c[2] }) < -kLargestOvershoot)
+      {
         return Status::error("cutting along the map: point " + std::to_string(v) + " lies outside its patch");
+      }
       // Off the curves, a point the cut left on a curve's far side is
       // mirrored back across it (kept off it, so its triangles keep area).
       const bool onCurve = onCurve_[v] != 0;
@@ -512,6 +538,74 @@ private:
 
   /// Walks the straight segment from `source` to `target` in the planar map
   /// and lists the vertices it passes and the edges it crosses.
+  /// A surface triangle's corners in the chart a walk reads it in, and the
+  /// walk's goal there.
+  struct TriangleChart
+  {
+    std::array<Vec2, 3> corners; ///< In the triangle's vertex order.
+    Vec2 goal = Vec2::Zero();
+    bool ownStar = false; ///< Drawn in the end's star of its own (else in `uv_`).
+    Vec2 at(const EditableMesh& mesh, int triangle, int vertex) const
+    {
+      const Triangle& tri = mesh.triangle(triangle);
+      return corners[vertex == tri[0] ? 0 : vertex == tri[1] ? 1 : 2];
+    }
+  };
+
+  /// Triangle `triangle` in the walk's chart (`uv_`, its region only, the
+  /// goal at `goal`), except near the end of a curve being cut along a map:
+  /// there, where every corner lies in the end's star and one within
+  /// `kEndRadius` of it, in the end's star unfolded for this triangle alone,
+  /// opened in the widest gap between its corners' angles round the end.
+  /// The map spreads the triangles round a landmark all round its star,
+  /// whose seam one chart of every vertex (`uv_`) must put somewhere, and
+  /// some straddle it near the end; two unfoldings differ by a turn round
+  /// the end, so they agree on the way in to it. False if the triangle has
+  /// no chart.
+  bool chartOf(int triangle, const Vec2& goal, TriangleChart& chart) const
+  {
+    const Triangle& tri = net_.mesh.triangle(triangle);
+    if (endStar_)
+    {
+      std::array<double, 3> radius{}, angle{};
+      bool round = true, near = false;
+      for (int k = 0; k < 3 && round; ++k)
+      {
+        round = endStar_->polar(points_[tri[k]], radius[k], angle[k]);
+        near = near || radius[k] < kEndRadius;
+      }
+      if (round && near)
+      {
+        // Corners at the end itself have no angle.
+        std::vector<double> around;
+        for (int k = 0; k < 3; ++k)
+          if (radius[k] > 0.0)
+            around.push_back(angle[k]);
+        std::sort(around.begin(), around.end());
+        const double turn = endStar_->turn();
+        double widest = around.empty() ? turn : around.front() + turn - around.back(), below = -1.0;
+        for (std::size_t i = 0; i + 1 < around.size(); ++i)
+          if (around[i + 1] - around[i] > widest)
+          {
+            widest = around[i + 1] - around[i];
+            below = around[i]; // corners up to here go a turn on, past the others
+          }
+        for (int k = 0; k < 3; ++k)
+          chart.corners[k] = endStar_->atPolar(radius[k], angle[k] <= below ? angle[k] + turn : angle[k]);
+        chart.goal = endStar_->atPolar(0.0, 0.0);
+        chart.ownStar = true;
+        if (cross2(chart.corners[1] - chart.corners[0], chart.corners[2] - chart.corners[0]) > 0.0)
+          return true;
+      }
+    }
+    if (!inRegion_[triangle])
+      return false;
+    chart.corners = { uv_[tri[0]], uv_[tri[1]], uv_[tri[2]] };
+    chart.goal = goal;
+    chart.ownStar = false;
+    return true;
+  }
+
   bool walk(int source, int target, double snap, std::vector<WalkEvent>& events) const
   {
     const EditableMesh& mesh = net_.mesh;
@@ -519,49 +613,70 @@ private:
     int atVertex = source; // else: on halfedge `crossed` at `t`
     int crossed = -1;
     double t = 0.0;
+    // A point's share of the way along the edge, in the chart `chart` that
+    // placed it: its distance from the end in the end's own star (the point
+    // is on the way in), else its projection onto the edge in `uv_`.
+    const Vec2 start = uv_[source];
+    const auto along = [&](const TriangleChart& chart, const Vec2& at) {
+      if (chart.ownStar)
+        return std::clamp(1.0 - (at - chart.goal).norm() / (goal - start).norm(), 0.0, 1.0);
+      return std::clamp((at - start).dot(goal - start) / (goal - start).squaredNorm(), 0.0, 1.0);
+    };
     for (std::size_t step = 0; step <= region_.size() + 2; ++step)
     {
       int exit = -1;
       double exitT = 0.0;
+      TriangleChart used;
+      int exitTriangle = -1;
       if (atVertex >= 0)
       {
         if (atVertex == target)
           return true;
-        const Vec2 p = uv_[atVertex], d = goal - p;
         const int first = mesh.outgoing(atVertex);
         int h = first;
         do
         {
-          if (!inRegion_[EditableMesh::triangleOf(h)])
+          const int triangle = EditableMesh::triangleOf(h);
+          TriangleChart chart;
+          if (!chartOf(triangle, goal, chart))
           {
             if (!lenientAtVertices_)
-              return false;
+              { walkFailure_ = "a triangle round a vertex is outside the chart"; return false; }
             h = mesh.nextAroundVertex(h);
             continue;
           }
-          const Vec2& y = uv_[mesh.to(h)];
-          const Vec2& z = uv_[mesh.to(EditableMesh::next(h))];
+          const Vec2 p = chart.at(mesh, triangle, atVertex), d = chart.goal - p;
+          const Vec2 y = chart.at(mesh, triangle, mesh.to(h));
+          const Vec2 z = chart.at(mesh, triangle, mesh.to(EditableMesh::next(h)));
           const double cy = cross2(y - p, d), cz = cross2(d, z - p);
           if (cy >= 0.0 && cz >= 0.0 && cy + cz > 0.0)
           {
             exit = EditableMesh::next(h);
             exitT = cy / (cy + cz);
+            used = chart;
+            exitTriangle = triangle;
             break;
           }
           h = mesh.nextAroundVertex(h);
         } while (h != first);
         if (exit < 0)
-          return false;
+          { walkFailure_ = "no triangle round a vertex lies towards the end"; return false; }
       }
       else
       {
         const int entry = mesh.opposite(crossed); // b -> a in the next triangle (b, a, w)
-        if (!inRegion_[EditableMesh::triangleOf(entry)])
-          return false;
-        const Vec2 p = (1.0 - t) * uv_[mesh.from(crossed)] + t * uv_[mesh.to(crossed)];
-        const Vec2 d = goal - p;
+        const int triangle = EditableMesh::triangleOf(entry);
+        TriangleChart chart;
+        if (!chartOf(triangle, goal, chart))
+          { walkFailure_ = "it enters a triangle outside the chart"; return false; }
+        exitTriangle = triangle;
         const int b = mesh.from(entry), a = mesh.to(entry), w = mesh.to(EditableMesh::next(entry));
-        const double sa = cross2(d, uv_[a] - p), sb = cross2(d, uv_[b] - p), sw = cross2(d, uv_[w] - p);
+        const Vec2 pa = chart.at(mesh, triangle, a), pb = chart.at(mesh, triangle, b), pw = chart.at(mesh, triangle, w);
+        // `crossed` runs a -> b.
+        const Vec2 p = (1.0 - t) * pa + t * pb;
+        const Vec2 d = chart.goal - p;
+        const double sa = cross2(d, pa - p), sb = cross2(d, pb - p), sw = cross2(d, pw - p);
+        used = chart;
         if ((sw > 0.0) == (sa > 0.0) && sw != 0.0)
         {
           exit = EditableMesh::prev(entry); // w -> b
@@ -580,8 +695,10 @@ private:
         atVertex = u;
       else if ((exitT >= 1.0 - snap || exitT >= 1.0 || (v == target && exitT > 0.5)) && vFree)
         atVertex = v;
-      else if (exitT <= 0.0 || exitT >= 1.0 || mesh.tag(exit) >= 0)
-        return false; // through an occupied vertex, or across a curve
+      else if (exitT <= 0.0 || exitT >= 1.0)
+        { walkFailure_ = "it runs through a vertex of another curve"; return false; }
+      else if (mesh.tag(exit) >= 0)
+        { walkFailure_ = "it crosses another curve"; return false; }
       else
       {
         // Near a vertex it may not use, cross a little further away instead
@@ -589,17 +706,18 @@ private:
         atVertex = -1;
         crossed = exit;
         t = std::clamp(exitT, kSmallestCut, 1.0 - kSmallestCut);
-        events.push_back({ -1, u, v, t });
+        const Vec2 at = (1.0 - t) * used.at(mesh, exitTriangle, u) + t * used.at(mesh, exitTriangle, v);
+        events.push_back({ -1, u, v, t, along(used, at) });
         continue;
       }
       if (atVertex != target && std::any_of(events.begin(), events.end(),
                                   [&](const WalkEvent& e) { return e.vertex == atVertex; }))
-        return false;
+        { walkFailure_ = "it comes back to a vertex"; return false; }
       if (atVertex == source)
-        return false;
-      events.push_back({ atVertex, -1, -1, 0.0 });
+        { walkFailure_ = "it comes back to its start"; return false; }
+      events.push_back({ atVertex, -1, -1, 0.0, along(used, used.at(mesh, exitTriangle, atVertex)) });
     }
-    return false;
+    { walkFailure_ = "it does not reach its end"; return false; }
   }
 
   /// Applies a walk: splits the crossed edges and returns the curve.
@@ -893,6 +1011,8 @@ private:
   std::vector<Vec2> uv_;           // planar map of the current star
   std::vector<char> marks_;        // vertices a new curve may not use
   bool lenientAtVertices_ = false; // a walk passes over triangles outside the region round a vertex
+  mutable std::string walkFailure_; // why the last walk failed, for the cut's message
+  const StarUnfolding* endStar_ = nullptr; // while cutting along a map: the star the walk heads into
   const BaseCharts* charts_ = nullptr; // while cutting along a map: its charts
   std::vector<BasePoint> points_;  // and every vertex's place in it
   std::vector<int> marked_;
@@ -931,9 +1051,22 @@ Status cutAlongMap(const StraightenedNet& in, const BaseDomain& domain, const Ba
     return Status::error("cutting along the map: the map does not belong to this net");
   NetStraightenerOptions options;
   NetStraightenerReport report;
-  out = StraightenedNet{};
-  Straightener straightener(domain, options, out, report);
-  return straightener.recut(in, charts, points, map);
+  // First in one chart per curve; where that fails (the map's triangles
+  // round a curve's end straddle its star's seam), again with the
+  // triangles near each end drawn each in its own.
+  Status first;
+  for (const bool endCharts : { false, true })
+  {
+    out = StraightenedNet{};
+    map = PatchParameterization{};
+    Straightener straightener(domain, options, out, report);
+    const Status s = straightener.recut(in, charts, points, map, endCharts);
+    if (s.ok())
+      return s;
+    if (!endCharts)
+      first = s;
+  }
+  return first;
 }
 
 } // namespace cmp
