@@ -379,12 +379,13 @@ void expectRemeshed(vtkPolyData* remesh, vtkPolyData* original, vtkPolyData* inp
 /// SHREC'07 models of `folder` straightened on `l0`, as a multiblock of
 /// blocks named after them.
 vtkSmartPointer<vtkMultiBlockDataSet> parameterizedGroup(
-  const std::string& folder, const std::vector<std::string>& models, vtkPolyData* l0)
+  const std::string& folder, const std::vector<std::string>& models, vtkPolyData* l0, bool freeCurves = true)
 {
   auto group = vtkSmartPointer<vtkMultiBlockDataSet>::New();
   for (unsigned int b = 0; b < models.size(); ++b)
   {
-    group->SetBlock(b, parameterized(readLandmarked(folder + models[b] + ".off", folder + models[b] + ".vts"), l0));
+    group->SetBlock(
+      b, parameterized(readLandmarked(folder + models[b] + ".off", folder + models[b] + ".vts"), l0, freeCurves));
     group->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), models[b].c_str());
   }
   return group;
@@ -659,7 +660,9 @@ TEST(SemiRegularRemesherFilter, SampleRelaxationMovesOneSetOfLocationsForTheWhol
   const std::string folder = sharedDataDir() + "/shrec07-fourleg/";
   vtkSmartPointer<vtkPolyData> l0 = baseDomainOf(readLandmarked(folder + "381.off", folder + "381.vts"));
   const std::vector<std::string> models = { "381", "389" };
-  vtkSmartPointer<vtkMultiBlockDataSet> group = parameterizedGroup(folder, models, l0);
+  // On the paper's fixed curves, where 389's legs crowd in the map most
+  // (with free curves both remeshes are within 1% of the diagonal already).
+  vtkSmartPointer<vtkMultiBlockDataSet> group = parameterizedGroup(folder, models, l0, /*freeCurves=*/false);
   const auto remesh = [&](int rounds, vtkSmartPointer<vtkMultiBlockDataSet>& blocks,
                         vtkSmartPointer<vtkPolyData>& connectivity)
   {

@@ -326,8 +326,9 @@ int relaxStar(const TracedNet& net, const BaseDomain& domain, int center, int cu
 class Optimizer
 {
 public:
-  Optimizer(const TracedNet& net, const BaseCharts& charts, std::vector<BasePoint>& points)
+  Optimizer(const TracedNet& net, const BaseDomain& domain, const BaseCharts& charts, std::vector<BasePoint>& points)
     : mesh_(net.mesh)
+    , domain_(domain)
     , charts_(charts)
     , points_(points)
     , pinned_(net.mesh.vertexCount(), 0)
@@ -335,6 +336,14 @@ public:
   {
     for (int v : net.landmarkVertex)
       pinned_[v] = 1;
+    stars_.resize(domain.mesh.vertexCount());
+    for (int t = 0; t < domain.mesh.triangleCount(); ++t)
+      for (int k = 0; k < 3; ++k)
+      {
+        const int b = domain.mesh.triangles[t][k];
+        if (!stars_[b].built)
+          stars_[b].built = stars_[b].star.build(domain, t, b, domain.mesh.triangles[t][(k + 1) % 3]);
+      }
     for (int t = 0; t < mesh_.triangleCount(); ++t)
     {
       const Triangle& tri = mesh_.triangle(t);
@@ -420,7 +429,37 @@ public:
       if (charted && !(cross2(p[1] - p[0], p[2] - p[0]) > 0.0))
         return false;
     }
-    return true;
+    return !wrapsBaseVertex(tri);
+  }
+
+  /// Whether a triangle with no corner at a base vertex reaches more than
+  /// half a turn round it, its corners all in that vertex's star: drawn in
+  /// the star, it would hold the vertex, so the map would wrap round the
+  /// landmark there, which no chart of its corners' triangles shows (each
+  /// draws it unflipped) and along which no curve can be cut.
+  bool wrapsBaseVertex(const Triangle& tri) const
+  {
+    for (int b : domain_.mesh.triangles[points_[tri[0]].triangle])
+    {
+      const Star& around = stars_[b];
+      if (!around.built)
+        continue;
+      std::array<double, 3> angle{};
+      bool inStar = true;
+      for (int k = 0; k < 3 && inStar; ++k)
+      {
+        double radius = 0.0;
+        inStar = around.star.polar(points_[tri[k]], radius, angle[k]) && radius > 0.0;
+      }
+      if (!inStar)
+        continue;
+      std::sort(angle.begin(), angle.end());
+      const double turn = around.star.turn();
+      const double widest = std::max({ angle[1] - angle[0], angle[2] - angle[1], angle[0] + turn - angle[2] });
+      if (turn - widest > kPi)
+        return true;
+    }
+    return false;
   }
 
   double totalEnergy() const
@@ -544,12 +583,14 @@ public:
       if (!charts_.locate(anchor, candidate, moved))
         continue;
       // Every triangle of the ring must keep a chart of its own corners,
-      // with the energy this chart gave it.
+      // with the energy this chart gave it, stay unflipped in every chart
+      // of its corners' triangles and not wrap round a base vertex.
       points_[v] = moved;
       double check = 0.0;
       for (const Around& around : ring_)
         check += energy(around.triangle);
-      if (check < e0)
+      if (check < e0 &&
+        std::all_of(ring_.begin(), ring_.end(), [&](const Around& around) { return consistent(around.triangle); }))
         return true;
       points_[v] = before;
     }
@@ -575,9 +616,18 @@ private:
     return sum;
   }
 
+  /// A base vertex's star, unfolded (`built` false if it is not one fan).
+  struct Star
+  {
+    StarUnfolding star;
+    bool built = false;
+  };
+
   const EditableMesh& mesh_;
+  const BaseDomain& domain_;
   const BaseCharts& charts_;
   std::vector<BasePoint>& points_;
+  std::vector<Star> stars_;
   double side_ = 1.0;
   std::vector<char> pinned_;
   std::vector<Metric> metrics_;
@@ -739,7 +789,7 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
   }
 
   GlobalMapReport result;
-  Optimizer optimizer(net, charts, start);
+  Optimizer optimizer(net, domain, charts, start);
   const double area = optimizer.totalArea();
   if (!(area > 0.0) || baseTriangles <= 0)
     return Status::error("global map: the surface has no area");
