@@ -14,6 +14,10 @@ from .stages import BLEND_ALIGNMENTS
 DEFAULT_LEVEL = 4
 MAX_LEVEL = 8
 MAX_SAMPLE_RELAXATION = 32  # the plugin's range; more rounds gain nothing measurable
+# The command remeshes the whole collection in one run, so the relaxed
+# locations are the collection's own (the filter's default stays 0: remeshers
+# run one model at a time would each move them their own way).
+DEFAULT_SAMPLE_RELAXATION = 4
 WEIGHT_SUM_TOLERANCE = 1e-9  # vtkCMPShapeBlend's
 
 
@@ -43,9 +47,9 @@ def parse_arguments(argv):
                         "default 0: uniform)")
     parser.add_argument("--relax-samples", type=int, metavar="N",
                         help="N rounds of sample relaxation (the Semi-Regular Remesher's SampleRelaxationIterations; "
-                        "default 0, or the collection's relax_samples): remesh vertices move within their L0 "
-                        "triangle or edge towards where the models' surface crowds in the parameterization (tails, "
-                        "ears), one set of locations for the whole collection; 4 is a good choice")
+                        "default %d, or the collection's relax_samples; 0: none): remesh vertices move within their "
+                        "L0 triangle or edge towards where the models' surface crowds in the parameterization (tails, "
+                        "ears), one set of locations for the whole collection" % DEFAULT_SAMPLE_RELAXATION)
     parser.add_argument("--lower-stretch", action="store_true",
                         help="lower the stretch of every patch's map (Net Straightener's LowerStretch): parts "
                         "without landmarks, such as ears and tails, get more remesh vertices, at the price of more "
@@ -98,7 +102,7 @@ def parse_arguments(argv):
     if args.level is None:
         args.level = DEFAULT_LEVEL
     if args.relax_samples is None:
-        args.relax_samples = 0
+        args.relax_samples = DEFAULT_SAMPLE_RELAXATION
     if args.view_up is None:
         args.view_up = "+y"
     if args.blend_alignment is None:
