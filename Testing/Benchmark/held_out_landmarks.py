@@ -285,9 +285,11 @@ def per_feature(errors):
 # ---------------------------------------------------------------------------
 # Runs of the command.
 
-def run_command(command, models, held_out, landmark_folder, output, level, flags, log=None):
+def run_command(command, models, held_out, landmark_folder, output, level, flags, log=None, reuse=False):
     """Runs the command on `models` with the held-out landmarks removed.
-    Returns (ok, message): ok when every model was remeshed."""
+    Returns (ok, message, seconds): ok when every model was remeshed. With
+    `reuse`, a finished earlier run in `output` of the same arguments is
+    read again instead (seconds then come from its report)."""
     os.makedirs(landmark_folder, exist_ok=True)
     arguments = [command]
     for model in models:
@@ -296,6 +298,10 @@ def run_command(command, models, held_out, landmark_folder, output, level, flags
         arguments += ["--mesh", model.mesh, "--landmarks", reduced]
     arguments += ["--base-domain-from", "0", "--level", str(level), "--no-render"] + list(flags)
     arguments += ["--output", output]
+    if reuse and log and os.path.exists(log):
+        with open(log) as f:
+            if f.readline().rstrip("\n") == " ".join(arguments):
+                return _check_run(models, output, 0, "the earlier run") + (_logged_seconds(log),)
     if os.path.exists(output):
         shutil.rmtree(output)
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PV_PLUGIN_PATH")}
@@ -305,18 +311,44 @@ def run_command(command, models, held_out, landmark_folder, output, level, flags
     seconds = time.time() - start
     if log:
         with open(log, "w") as f:
-            f.write(" ".join(arguments) + "\n\n" + result.stdout)
+            f.write(" ".join(arguments) + "\n\n" + result.stdout + "\n# seconds %.1f\n" % seconds)
+    last = (result.stdout.strip().splitlines() or [""])[-1]
+    return _check_run(models, output, result.returncode, last) + (seconds,)
+
+
+def _check_run(models, output, status, last_line):
     report_path = os.path.join(output, "report.json")
-    if result.returncode != 0 or not os.path.exists(report_path):
-        return False, "exit status %d: %s" % (result.returncode, result.stdout.strip().splitlines()[-1:]), seconds
+    if status != 0 or not os.path.exists(report_path):
+        return False, "exit status %d: %s" % (status, last_line)
     with open(report_path) as f:
         report = json.load(f)
     if report.get("failed"):
-        return False, "failed models: %s" % report["failed"], seconds
+        return False, "failed models: %s" % report["failed"]
     for model in models:
         if not os.path.exists(remesh_path(output, model)):
-            return False, "no remesh of %s" % model.name, seconds
-    return True, "ok", seconds
+            return False, "no remesh of %s" % model.name
+    return True, "ok"
+
+
+def _logged_seconds(log):
+    """The time a logged run took (its last line, "# seconds N"), or 0."""
+    with open(log) as f:
+        lines = f.read().strip().splitlines()
+    if lines and lines[-1].startswith("# seconds "):
+        return float(lines[-1].split()[-1])
+    return 0.0
+
+
+def effective_settings(output):
+    """What the run did, from its report (defaults change): free curves,
+    rounds of sample relaxation, fold repair, level."""
+    with open(os.path.join(output, "report.json")) as f:
+        report = json.load(f)
+    free = {m.get("straighten", {}).get("free_curves") for m in report["models"].values()}
+    remesh = report["remesh"]
+    return {"free_curves": free.pop() if len(free) == 1 else sorted(free, key=str),
+            "relax_samples": remesh.get("sample_relaxation_rounds"),
+            "fold_repair": remesh.get("fold_repair"), "level": remesh.get("level")}
 
 
 def remesh_path(output, model):
@@ -354,6 +386,8 @@ def main(argv=None):
                         help="NAME=FLAGS, e.g. 'fixed=--no-free-curves' (repeat; default: default, "
                              "no-free-curves, relax-samples-4)")
     parser.add_argument("--max-draws", type=int, default=20)
+    parser.add_argument("--reuse", action="store_true",
+                        help="read the runs already in OUTPUT/runs again where their command line is the same")
     args = parser.parse_args(argv)
     configs = args.config or DEFAULT_CONFIGS
     command = os.path.abspath(args.command)
@@ -377,14 +411,16 @@ def main(argv=None):
         output = os.path.join(runs, tag)
         print("subset %s: running %s" % (held_out, first_name), flush=True)
         ok, message, seconds = run_command(command, models, held_out, os.path.join(runs, "landmarks-%d" % s),
-                                           output, args.level, first_flags, log=output + ".log")
+                                           output, args.level, first_flags, log=output + ".log",
+                                           reuse=args.reuse)
         if not ok:
             print("  redrawn: %s" % message, flush=True)
             redrawn.append({"held_out": held_out, "reason": message})
             continue
         subsets.append(held_out)
         errors, _ = measure(models, output, held_out)
-        results[(first_name, s)] = {"errors": errors, "seconds": seconds, "status": "ok"}
+        results[(first_name, s)] = {"errors": errors, "seconds": seconds, "status": "ok",
+                                  "settings": effective_settings(output)}
         print("  mean %.2f %%, worst %.2f %% (%.0f s)" % (100 * summary(errors)["mean"],
                                                       100 * summary(errors)["worst"], seconds), flush=True)
 
@@ -394,13 +430,15 @@ def main(argv=None):
             output = os.path.join(runs, tag)
             print("subset %s: running %s" % (held_out, name), flush=True)
             ok, message, seconds = run_command(command, models, held_out, os.path.join(runs, "landmarks-%d" % s),
-                                               output, args.level, flags, log=output + ".log")
+                                               output, args.level, flags, log=output + ".log",
+                                               reuse=args.reuse)
             if not ok:
                 print("  failed: %s" % message, flush=True)
                 results[(name, s)] = {"errors": [], "seconds": seconds, "status": message}
                 continue
             errors, _ = measure(models, output, held_out)
-            results[(name, s)] = {"errors": errors, "seconds": seconds, "status": "ok"}
+            results[(name, s)] = {"errors": errors, "seconds": seconds, "status": "ok",
+                                 "settings": effective_settings(output)}
             print("  mean %.2f %%, worst %.2f %% (%.0f s)" % (100 * summary(errors)["mean"],
                                                           100 * summary(errors)["worst"], seconds), flush=True)
 
@@ -418,8 +456,8 @@ def write_results(args, configs, models, subsets, redrawn, results):
              "Error: 3D distance from the carried point to the true landmark over sqrt(area) of the "
              "target model; mean and worst over held-out landmarks and ordered pairs i != j. Target: "
              "mean < 3 %.", "",
-             "| configuration | subset | held out | mean % | median % | 90th % | worst % | worst case | seconds |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "| configuration | subset | held out | mean % | median % | 90th % | worst % | worst case | run as | seconds |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for name, flags in configs:
         entry = {"flags": flags, "subsets": []}
         pooled = []
@@ -428,22 +466,26 @@ def write_results(args, configs, models, subsets, redrawn, results):
             if r is None or r["status"] != "ok":
                 status = r["status"] if r else "not run"
                 entry["subsets"].append({"held_out": held_out, "status": status})
-                lines.append("| %s | %d | %s | %s | | | | | |" % (name, s, held_out, status))
+                lines.append("| %s | %d | %s | %s | | | | | | |" % (name, s, held_out, status))
                 continue
             pooled += r["errors"]
             sm = summary(r["errors"])
             entry["subsets"].append({"held_out": held_out, "status": "ok", "seconds": r["seconds"],
-                                     "summary": sm, "per_feature": per_feature(r["errors"]),
-                                     "errors": r["errors"]})
+                                     "settings": r["settings"], "summary": sm,
+                                     "per_feature": per_feature(r["errors"]), "errors": r["errors"]})
             w = sm["worst_case"]
-            lines.append("| %s | %d | %s | %.2f | %.2f | %.2f | %.2f | feature %d, %s -> %s | %.0f |" % (
+            settings = r["settings"]
+            run_as = "%s curves, relax %s" % ("free" if settings["free_curves"] is True else
+                                             "fixed" if settings["free_curves"] is False else settings["free_curves"],
+                                             settings["relax_samples"])
+            lines.append("| %s | %d | %s | %.2f | %.2f | %.2f | %.2f | feature %d, %s -> %s | %s | %.0f |" % (
                 name, s, held_out, 100 * sm["mean"], 100 * sm["median"], 100 * sm["p90"], 100 * sm["worst"],
-                w["feature"], w["from"], w["to"], r["seconds"]))
+                w["feature"], w["from"], w["to"], run_as, r["seconds"]))
         if pooled:
             sm = summary(pooled)
             entry["all"] = {k: v for k, v in sm.items()}
             w = sm["worst_case"]
-            lines.append("| **%s** | all | | **%.2f** | %.2f | %.2f | **%.2f** | feature %d, %s -> %s | |" % (
+            lines.append("| **%s** | all | | **%.2f** | %.2f | %.2f | **%.2f** | feature %d, %s -> %s | | |" % (
                 name, 100 * sm["mean"], 100 * sm["median"], 100 * sm["p90"], 100 * sm["worst"],
                 w["feature"], w["from"], w["to"]))
         table["configs"][name] = entry
