@@ -56,7 +56,11 @@ struct GlobalMapReport
 /// Energy: sum over surface triangles of area x (|J|^2 + |J^-1|^2), J the
 /// map's differential, measured in a chart of the base triangles around
 /// the triangle's corners (`BaseCharts`): infinite for a triangle flipped
-/// or crushed, so every accepted move keeps the map bijective.
+/// or crushed. Every accepted move also keeps each triangle it touches
+/// unflipped in every chart of its corners' base triangles, and no triangle
+/// without a corner at a base vertex may reach more than half a turn round
+/// it (the map would wrap round the landmark, which no cut can follow), so
+/// the map stays bijective.
 ///
 /// Moves, in two phases:
 /// - star solves (Praun and Hoppe 2003, Schreiner et al. 2004, with SLIM

@@ -335,9 +335,7 @@ private:
         return Status::error("cutting along the map: point " + std::to_string(v) + " is not in its patch's chart");
       std::array<double, 3> c = BaseCharts::barycentric({ patch, at });
       if (std::min({ c[0], c[1], c[2] }) < -kLargestOvershoot)
-      {
         return Status::error("cutting along the map: point " + std::to_string(v) + " lies outside its patch");
-      }
       // Off the curves, a point the cut left on a curve's far side is
       // mirrored back across it (kept off it, so its triangles keep area).
       const bool onCurve = onCurve_[v] != 0;
@@ -536,8 +534,6 @@ private:
     return true;
   }
 
-  /// Walks the straight segment from `source` to `target` in the planar map
-  /// and lists the vertices it passes and the edges it crosses.
   /// A surface triangle's corners in the chart a walk reads it in, and the
   /// walk's goal there.
   struct TriangleChart
@@ -606,6 +602,10 @@ private:
     return true;
   }
 
+  /// Walks the straight segment from `source` to `target` in the planar map
+  /// (each triangle as `chartOf()` draws it) and lists the vertices it
+  /// passes and the edges it crosses; false, saying why in `walkFailure_`,
+  /// if it leaves the map or meets another curve.
   bool walk(int source, int target, double snap, std::vector<WalkEvent>& events) const
   {
     const EditableMesh& mesh = net_.mesh;

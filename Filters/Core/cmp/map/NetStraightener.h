@@ -104,10 +104,17 @@ Status straightenNet(const TracedNet& traced, const BaseDomain& domain, Straight
 ///        edge's two base triangles, walked across the surface's triangles
 ///        and cut into it (as straightening cuts its lines), and `map` gives
 ///        every vertex of the result its place in its patch's base triangle
-///        (the lowest-numbered one for a vertex on a curve). Fails, naming
-///        the problem, where the map's curves would not make a layout
-///        equivalent to L0 (a curve that leaves its chart or runs along
-///        another, curves leaving a landmark out of order).
+///        (the lowest-numbered one for a vertex on a curve). Where that
+///        fails, the cut is made again with every surface triangle near a
+///        curve's end drawn in the end's star on its own (the map spreads
+///        the triangles round a landmark all round its star, across the seam
+///        one chart must have). Beyond the paper (Documentation/algorithm.md,
+///        "The map").
+/// \pre `points` is bijective in `charts`, as `optimizeGlobalMap()` keeps it.
+///        Fails, naming the problem (the edge, its landmarks and why), where
+///        the map's curves would not make a layout equivalent to L0 (a curve
+///        that leaves its chart or runs along another, curves leaving a
+///        landmark out of order).
 Status cutAlongMap(const StraightenedNet& in, const BaseDomain& domain, const BaseCharts& charts,
   const std::vector<BasePoint>& points, StraightenedNet& out, PatchParameterization& map);
 
