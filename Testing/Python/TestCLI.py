@@ -4,7 +4,7 @@
                      [--pictures [--keep-pictures DIR]] CASE
 
 CASE is one of: shipped-examples, collection, given-base-domain,
-failure-isolation, argument-errors, base-domain-mismatch. Every case but
+failure-isolation, crash-isolation, argument-errors, base-domain-mismatch. Every case but
 argument-errors and shipped-examples needs the shared data (shipped-examples
 takes the project's Data folder). Each run writes into a fresh temporary
 folder.
@@ -1082,6 +1082,88 @@ def case_failure_isolation(tmp):
     check_stages_without_a_model(tmp, good, garbage)
 
 
+def write_compressed_vtp(path, last_offset):
+    """An octahedron as a zlib-compressed .vtp whose Polys offsets end at
+    `last_offset` instead of 24. checkVTPFile does not decompress, so with a
+    huge last offset VTK 9.2's reader gets the file and aborts the process
+    ("Unable to allocate" the connectivity it claims)."""
+    import base64
+    import struct
+    import zlib
+
+    def array(name, vtk_type, values, code, components=1):
+        raw = struct.pack("<%d%s" % (len(values), code), *values)
+        packed = zlib.compress(raw)
+        header = struct.pack("<QQQQ", 1, len(raw), len(raw), len(packed))
+        return '<DataArray type="%s" Name="%s" NumberOfComponents="%d" format="binary">%s%s</DataArray>' % (
+            vtk_type, name, components, base64.b64encode(header).decode(), base64.b64encode(packed).decode())
+
+    points = [coordinate for point in OCTAHEDRON_POINTS for coordinate in point]
+    connectivity = [index for triangle in OCTAHEDRON_TRIANGLES for index in triangle]
+    offsets = [3 * (i + 1) for i in range(len(OCTAHEDRON_TRIANGLES))]
+    offsets[-1] = last_offset
+    return write_text(path, "".join([
+        '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" '
+        'header_type="UInt64" compressor="vtkZLibDataCompressor">\n<PolyData>\n',
+        '<Piece NumberOfPoints="%d" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="%d">\n'
+        % (len(OCTAHEDRON_POINTS), len(OCTAHEDRON_TRIANGLES)),
+        "<Points>%s</Points>\n" % array("Points", "Float64", points, "d", 3),
+        "<Polys>%s%s</Polys>\n" % (array("connectivity", "Int64", connectivity, "q"),
+                                   array("offsets", "Int64", offsets, "q")),
+        "</Piece>\n</PolyData>\n</VTKFile>\n"]))
+
+
+def case_crash_isolation(tmp):
+    """A model whose reading or processing crashes the process doing it (a
+    file that makes VTK abort, or CMP_TEST_CRASH killing that model's child
+    with a signal) fails alone with the reason; the others are remeshed and
+    the report is written. So does a base domain file that crashes."""
+    crashing = write_compressed_vtp(os.path.join(tmp, "crashing.vtp"), 2 ** 41)
+    six = write_text(os.path.join(tmp, "six.txt"), "0\n1\n2\n3\n4\n5\n")
+    good = [(shrec("381", "off"), shrec("381", "vts")), (shrec("384", "off"), shrec("384", "vts"))]
+    pairs = [good[0], (crashing, six), (shrec("382", "off"), shrec("382", "vts")), good[1],
+             (shrec("391", "off"), shrec("391", "vts"))]
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(
+        model_arguments(pairs) + ["--base-domain-from", "0", "--level", "1", "--no-render"], out,
+        environment={"CMP_TEST_CRASH": "read:382:SIGSEGV,process:391:SIGABRT"})
+    check(report is not None, "no report.json after crashes (status %d, stderr: %s)" % (status, stderr))
+    check_equal(status, 1, "exit status with crashed models (stderr: %s)" % stderr)
+    check_equal(sorted(report["failed"]), ["382", "391", "crashing"], "failed models")
+    # While checkVTPFile cannot look into compressed data, VTK aborts on
+    # this file; once it can, its message replaces the crash here.
+    expected = {
+        "crashing": "crashed while reading and checking its files: the process doing it was killed by SIGABRT",
+        "382": "crashed while reading and checking its files: the process doing it was killed by SIGSEGV",
+        "391": "crashed while tracing and straightening its net: the process doing it was killed by SIGABRT",
+    }
+    for name, message in expected.items():
+        model = report["models"][name]
+        check_equal(model.get("status"), "failed", "status of " + name)
+        check_contains(model.get("error", ""), message, "error of " + name)
+        check_contains(stdout, "FAILED: " + model["error"], "summary line of " + name)
+    # What 391's read found is kept; its processing left no files behind
+    # that claim a result.
+    check_equal(report["models"]["391"].get("vertices"), read_off_header(shrec("391", "off"))[0], "391's vertices")
+    check("straighten" not in report["models"]["391"], "391 crashed, yet has straighten figures")
+    for name in ("381", "384"):
+        check_equal(report["models"][name].get("status"), "ok", "status of " + name)
+        check_straightened(out, name, report["models"][name])
+    check_remeshed(out, report, stdout, ["381", "384"], 1)
+
+    # A base domain file that crashes its reader: no base domain (exit
+    # status 3), the report says why.
+    out = os.path.join(tmp, "out-domain")
+    status, stdout, stderr, report = run_cli(model_arguments(good) + ["--base-domain", crashing, "--no-render"], out)
+    check_equal(status, 3, "exit status with a crashing base domain (stderr: %s)" % stderr)
+    check(report is not None, "no report.json after the base domain crashed")
+    check_contains(report["base_domain"].get("error", ""),
+                   "crashed while reading the base domain: the process doing it was killed by SIGABRT",
+                   "base domain error")
+    for name in ("381", "384"):
+        check_contains(report["models"][name].get("error", ""), "no base domain", "error of " + name)
+
+
 def check_stages_without_a_model(tmp, good, garbage):
     """With a model failed, PCA and the blend grid work on the models that
     were remeshed, two here: one mode, one row of blends. Weights given for
@@ -1438,6 +1520,7 @@ CASES = {
     "collection": case_collection,
     "given-base-domain": case_given_base_domain,
     "failure-isolation": case_failure_isolation,
+    "crash-isolation": case_crash_isolation,
     "lower-stretch": case_lower_stretch,
     "free-curves": case_free_curves,
     "fold-repair": case_fold_repair,
