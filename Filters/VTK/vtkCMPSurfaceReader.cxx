@@ -11,6 +11,8 @@
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformationVector.h>
+#include <vtkLZ4DataCompressor.h>
+#include <vtkLZMADataCompressor.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -18,6 +20,7 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkZLibDataCompressor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +57,24 @@ private:
   vtkNew<vtkCallbackCommand> callback_;
 };
 
+/// One block of a compressed VTP array, decompressed by the compressor VTK's
+/// reader would use, for checkVTPFile's checks of compressed values.
+bool decompressWithVTK(const std::string& compressor, const unsigned char* compressed, std::size_t compressedSize,
+  unsigned char* raw, std::size_t rawSize)
+{
+  vtkSmartPointer<vtkDataCompressor> decompressor;
+  if (compressor == "vtkZLibDataCompressor")
+    decompressor = vtkSmartPointer<vtkZLibDataCompressor>::New();
+  else if (compressor == "vtkLZ4DataCompressor")
+    decompressor = vtkSmartPointer<vtkLZ4DataCompressor>::New();
+  else if (compressor == "vtkLZMADataCompressor")
+    decompressor = vtkSmartPointer<vtkLZMADataCompressor>::New();
+  else
+    return false;
+  ErrorCollector quiet(decompressor); // a damaged block is checkVTPFile's to report
+  return rawSize == 0 || decompressor->Uncompress(compressed, compressedSize, raw, rawSize) == rawSize;
+}
+
 /// Reads STL or VTP with VTK's readers and triangulates polygons.
 cmp::Status readWithVTK(const std::string& path, const std::string& extension, vtkSmartPointer<vtkPolyData>& result)
 {
@@ -63,7 +84,7 @@ cmp::Status readWithVTK(const std::string& path, const std::string& extension, v
     if (cmp::Status s = cmp::checkSTLFile(path); !s.ok())
       return s;
   }
-  else if (cmp::Status s = cmp::checkVTPFile(path); !s.ok())
+  else if (cmp::Status s = cmp::checkVTPFile(path, decompressWithVTK); !s.ok())
     return s; // names the file and the line
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == "stl")
@@ -275,7 +296,11 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   {
     status = readWithVTK(this->FileName, ext, fromVTK);
     if (status.ok())
+    {
       status = cmp::bridge::toTriangleMesh(fromVTK, data.mesh);
+      if (!status.ok())
+        status = cmp::Status::error(std::string(this->FileName) + ": " + status.message());
+    }
   }
   if (!status.ok())
   {
