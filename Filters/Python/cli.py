@@ -30,9 +30,9 @@ Usage:
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others (its reading and its tracing
-and straightening run in child processes, so a crash fails it alone); the exit status is 1 if any
-model failed or a requested stage failed, 2 for a usage error, 3 if the
-base domain could not be made and 4 if a collection's meshes cannot be
+and straightening run in child processes, so a crash fails it alone); the
+exit status is 1 if any model failed or a requested stage failed, 2 for
+a usage error, 3 if the base domain could not be made and 4 if a collection's meshes cannot be
 had (the package is not installed or has changed). If the collection's remeshing fails, every
 model taking part in it fails. Pictures need an X display (xvfb-run -a
 will do); without one they are skipped, which is said and is no failure.

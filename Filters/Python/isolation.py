@@ -12,8 +12,8 @@ core starts no threads, so a fork copies no thread that holds a lock.
 
 For the tests, CMP_TEST_CRASH=STAGE:NAME:SIGNAL[,...] makes the child of
 model NAME's stage STAGE (read or process) kill itself with SIGNAL (for
-example SIGSEGV or SIGABRT) before it starts: a crash that no input file
-is needed for."""
+example SIGSEGV or SIGABRT; SIGSEGV for a name the signal module does not
+know) before it starts: a crash that no input file is needed for."""
 
 import os
 import pickle
@@ -140,9 +140,9 @@ def run_model_stage(model, stage, function, surfaces):
     """`function()`, one stage of `model` (a stages.Model), in a child
     process: afterwards model.report and the Model attributes named in
     `surfaces` ("surface", "parameterized", "curves") are what the child
-    left them. `stage` is a key of MODEL_STAGES. Raises StageError if the stage failed or the child crashed;
-    model.report then keeps the figures the child had written before a
-    StageError."""
+    left them. `stage` is a key of MODEL_STAGES. Raises StageError if the
+    stage failed or the child crashed; model.report then keeps the figures
+    the child had written before a StageError."""
     def child():
         try:
             function()
