@@ -41,6 +41,7 @@ from cmp_test_support import (
     landmarked_shrec_models,
     read_off_header,
     read_pinned,
+    timeout_factor,
     triangles_of,
     write_compressed_vtp,
     write_off,
@@ -66,8 +67,10 @@ def run_cli(arguments, output=None, display=None, environment=None, folder=None)
         if display:
             env["DISPLAY"] = display
     command = [COMMAND] + list(arguments) + (["--output", output] if output else [])
+    # 300 s per run on an idle machine, scaled as ctest scales the test's
+    # own timeout: beside other builds the 11-model collection took longer.
     result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            universal_newlines=True, timeout=300, cwd=folder)
+                            universal_newlines=True, timeout=300 * timeout_factor(), cwd=folder)
     check("Traceback" not in result.stderr and "Traceback" not in result.stdout,
           "consistent-remesh printed a traceback:\n" + result.stderr)
     report = None

@@ -326,3 +326,11 @@ def write_compressed_vtp(path, last_offset):
         "<Polys>%s%s</Polys>\n" % (array("connectivity", "Int64", connectivity, "q"),
                                    array("offsets", "Int64", offsets, "q")),
         "</Piece>\n</PolyData>\n</VTKFile>\n"]))
+
+
+def timeout_factor():
+    """CMP_TEST_TIMEOUT_FACTOR, which ctest passes to these tests and by which
+    it multiplies their timeouts (1 when a test is run by hand): a time limit
+    inside a test must be scaled the same way."""
+    value = os.environ.get("CMP_TEST_TIMEOUT_FACTOR", "1")
+    return int(value) if value.isdigit() and int(value) > 0 else 1
