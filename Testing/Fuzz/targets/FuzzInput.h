@@ -17,7 +17,7 @@ namespace cmp_fuzz
 
 /// Writes `size` bytes to a file of this process ending in `.extension`
 /// (in $TMPDIR, else /tmp) and returns its path; the file is rewritten for
-/// every input. Aborts if the file cannot be written: the harness, not the
+/// every input (so one extension per process) and removed at exit. Aborts if the file cannot be written: the harness, not the
 /// input, is broken then.
 inline std::string writeInput(const std::uint8_t* data, std::size_t size, const char* extension)
 {
@@ -28,6 +28,17 @@ inline std::string writeInput(const std::uint8_t* data, std::size_t size, const 
       "input";
   }();
   const std::string file = path + "." + extension;
+  static std::string written; // the one file of this process, removed at exit
+  if (written.empty())
+  {
+    written = file;
+    std::atexit([] { std::remove(written.c_str()); });
+  }
+  else if (written != file)
+  {
+    std::fprintf(stderr, "fuzz harness: one input file per process (%s, then %s)\n", written.c_str(), file.c_str());
+    std::abort();
+  }
   std::FILE* out = std::fopen(file.c_str(), "wb");
   if (!out || (size > 0 && std::fwrite(data, 1, size, out) != size) || std::fclose(out) != 0)
   {
