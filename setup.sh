@@ -5,13 +5,15 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-# ParaView 5.11 (with its own VTK 9.2) and what find_package(ParaView) needs.
+# ParaView 5.11 (with its own VTK 9.2) and what find_package(ParaView) needs;
+# clang and its sanitizer runtimes for the readers' libFuzzer targets.
 # Never add libvtk9-dev: it conflicts with python3-paraview.
 packages=(
   cmake g++ ninja-build pkg-config
   paraview-dev python3-paraview python3-mpi4py python3-numpy
   libeigen3-dev libgtest-dev xvfb
   libcgal-demo
+  clang libclang-rt-14-dev
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libqt5opengl5-dev
   libopenmpi-dev openmpi-bin libutfcpp-dev libboost-dev libexpat1-dev libfreetype-dev libgdal-dev
   libgl2ps-dev libglew-dev libhdf5-mpi-dev libjpeg-dev liblz4-dev liblzma-dev libxml2-dev

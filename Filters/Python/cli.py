@@ -29,9 +29,10 @@ Usage:
                     [--no-render] [--view-up AXIS] --output DIR
 
 Each model is named by its mesh file name without extension. A model that
-fails is reported and does not stop the others; the exit status is 1 if any
-model failed or a requested stage failed, 2 for a usage error, 3 if the
-base domain could not be made and 4 if a collection's meshes cannot be
+fails is reported and does not stop the others (its reading and its tracing
+and straightening run in child processes, so a crash fails it alone); the
+exit status is 1 if any model failed or a requested stage failed, 2 for
+a usage error, 3 if the base domain could not be made and 4 if a collection's meshes cannot be
 had (the package is not installed or has changed). If the collection's remeshing fails, every
 model taking part in it fails. Pictures need an X display (xvfb-run -a
 will do); without one they are skipped, which is said and is no failure.
@@ -46,6 +47,7 @@ from . import collection
 from . import report as written_report
 from .arguments import parse_arguments, prepare_output_folder
 from .figures import describe_base_domain
+from .isolation import polydata_from_text, polydata_to_text, run_in_child, run_model_stage
 from .render import run_pictures
 from .stages import (
     Model,
@@ -93,17 +95,21 @@ def main(argv=None):
         return 2
     models = [Model(m, l) for m, l in zip(args.mesh, args.landmarks)]
 
+    # Each model's files are read, and later traced and straightened, in a
+    # child process: a crash on one model's file fails that model alone.
     for index, model in enumerate(models):
         print("[%d/%d] %s: reading" % (index + 1, len(models), model.name), flush=True)
         try:
-            read_landmarked_surface(model)
+            run_model_stage(model, "read", lambda: read_landmarked_surface(model), ["surface"])
         except StageError as error:
             model.fail(error)
 
     domain = None
     try:
         if args.base_domain is not None:
-            domain = load_base_domain(args.base_domain)
+            domain = polydata_from_text(run_in_child("read", "base domain",
+                                                     lambda: polydata_to_text(load_base_domain(args.base_domain)),
+                                                     "reading the base domain"))
             source = args.base_domain
         else:
             model = models[args.base_domain_from]
@@ -126,7 +132,8 @@ def main(argv=None):
             model.fail("no base domain: " + report["base_domain"]["error"])
             continue
         step = "[%d/%d] %s:" % (index + 1, len(models), model.name)
-        try:
+
+        def process():
             check_against_base_domain(model, domain)
             print("%s tracing the net" % step, flush=True)
             traced = trace_net(model, domain, args.output)
@@ -134,6 +141,9 @@ def main(argv=None):
                   flush=True)
             straighten_net(model, domain, traced, args.output, args.lower_stretch, args.free_curves)
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
+
+        try:
+            run_model_stage(model, "process", process, ["parameterized", "curves"])
         except StageError as error:
             model.fail(error)
             print("%s FAILED: %s" % (step, model.report["error"]), flush=True)

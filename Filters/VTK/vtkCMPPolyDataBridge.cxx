@@ -46,6 +46,12 @@ Status toTriangleMesh(vtkPolyData* input, TriangleMesh& mesh)
     if (size != 3)
       return Status::error("cell " + std::to_string(cells->GetCurrentCellId()) + " is a polygon with " +
         std::to_string(size) + " points; only triangles are accepted (apply Triangulate first)");
+    // VTK's readers take a file's connectivity as it is: an id out of range
+    // would be read past the points by every stage after this one.
+    for (int k = 0; k < 3; ++k)
+      if (ids[k] < 0 || ids[k] >= pointCount)
+        return Status::error("cell " + std::to_string(cells->GetCurrentCellId()) + " refers to point " +
+          std::to_string(ids[k]) + ", but the surface has " + std::to_string(pointCount) + " points");
     mesh.triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
   }
   return {};

@@ -1,6 +1,7 @@
 #include "vtkCMPSurfaceReader.h"
 
 #include <cmp/io/MeshFile.h>
+#include <cmp/io/STLCheck.h>
 #include <cmp/io/VTPCheck.h>
 #include "vtkCMPPolyDataBridge.h"
 
@@ -10,6 +11,8 @@
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformationVector.h>
+#include <vtkLZ4DataCompressor.h>
+#include <vtkLZMADataCompressor.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -17,12 +20,11 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkZLibDataCompressor.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <type_traits>
 
@@ -55,50 +57,22 @@ private:
   vtkNew<vtkCallbackCommand> callback_;
 };
 
-/// True if VTK's STL reader may take the file for binary: it looks at the
-/// first bytes (kwsys DetectFileType) and calls the file binary when a share
-/// of them are not text, whatever the header says. This errs towards binary
-/// (any NUL byte, or 2% of other bytes in the first 256), so that every file
-/// VTK reads as binary gets the size check below.
-bool mayBeBinarySTL(const std::string& head)
+/// One block of a compressed VTP array, decompressed by the compressor VTK's
+/// reader would use, for checkVTPFile's checks of compressed values.
+bool decompressWithVTK(const std::string& compressor, const unsigned char* compressed, std::size_t compressedSize,
+  unsigned char* raw, std::size_t rawSize)
 {
-  if (head.empty())
-    return true;
-  std::size_t other = 0;
-  for (char c : head)
-  {
-    const unsigned char u = static_cast<unsigned char>(c);
-    if (u == 0)
-      return true;
-    if ((u < 32 || u > 126) && u != '\n' && u != '\r' && u != '\t')
-      ++other;
-  }
-  return 50 * other >= head.size();
-}
-
-/// vtkSTLReader trusts a binary STL's triangle count and aborts the process
-/// when it cannot allocate that much, so check the count against the size.
-/// An ASCII STL has no count: VTK's parser grows with what it reads.
-cmp::Status checkBinarySTLSize(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  char head[256] = {};
-  in.read(head, sizeof(head));
-  const std::size_t read = static_cast<std::size_t>(in.gcount());
-  if (!mayBeBinarySTL(std::string(head, read)))
-    return {};
-  const std::uintmax_t size = std::filesystem::file_size(path);
-  if (read < 84)
-    return cmp::Status::error("cannot read '" + path + "' as stl: a binary STL has at least 84 bytes, this file " +
-      std::to_string(size));
-  std::uint32_t count = 0;
-  for (int b = 3; b >= 0; --b)
-    count = (count << 8) | static_cast<unsigned char>(head[80 + b]);
-  if (size != 84 + 50 * static_cast<std::uintmax_t>(count))
-    return cmp::Status::error("cannot read '" + path + "' as stl: the header announces " + std::to_string(count) +
-      " triangles (" + std::to_string(84 + 50 * static_cast<std::uintmax_t>(count)) + " bytes) but the file has " +
-      std::to_string(size) + " bytes");
-  return {};
+  vtkSmartPointer<vtkDataCompressor> decompressor;
+  if (compressor == "vtkZLibDataCompressor")
+    decompressor = vtkSmartPointer<vtkZLibDataCompressor>::New();
+  else if (compressor == "vtkLZ4DataCompressor")
+    decompressor = vtkSmartPointer<vtkLZ4DataCompressor>::New();
+  else if (compressor == "vtkLZMADataCompressor")
+    decompressor = vtkSmartPointer<vtkLZMADataCompressor>::New();
+  else
+    return false;
+  ErrorCollector quiet(decompressor); // a damaged block is checkVTPFile's to report
+  return rawSize == 0 || decompressor->Uncompress(compressed, compressedSize, raw, rawSize) == rawSize;
 }
 
 /// Reads STL or VTP with VTK's readers and triangulates polygons.
@@ -107,10 +81,10 @@ cmp::Status readWithVTK(const std::string& path, const std::string& extension, v
   // VTK 9.2's readers trust the files' counts and types: check them first.
   if (extension == "stl")
   {
-    if (cmp::Status s = checkBinarySTLSize(path); !s.ok())
+    if (cmp::Status s = cmp::checkSTLFile(path); !s.ok())
       return s;
   }
-  else if (cmp::Status s = cmp::checkVTPFile(path); !s.ok())
+  else if (cmp::Status s = cmp::checkVTPFile(path, decompressWithVTK); !s.ok())
     return s; // names the file and the line
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == "stl")
@@ -322,7 +296,11 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   {
     status = readWithVTK(this->FileName, ext, fromVTK);
     if (status.ok())
+    {
       status = cmp::bridge::toTriangleMesh(fromVTK, data.mesh);
+      if (!status.ok())
+        status = cmp::Status::error(std::string(this->FileName) + ": " + status.message());
+    }
   }
   if (!status.ok())
   {

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 using namespace cmp;
 using test::writeTempFile;
@@ -231,6 +233,106 @@ TEST(VTPCheck, RefusesALastOffsetBeyondTheConnectivity)
   text.replace(text.find("format=\"ascii\">3</DataArray>"), 28, "format=\"binary\">" + inlineBinary(offsets) + "</DataArray>");
   message = check("offset-binary.vtp", text);
   EXPECT_NE(message.find("offset-binary.vtp:14: DataArray 'offsets': its last offset, 2199023255552, is beyond"),
+    std::string::npos)
+    << message;
+}
+
+namespace
+{
+
+// VTK's inline binary for a compressed array whose blocks are `blocks`,
+// each "compressed" by storing it as it is (the decompressor below copies).
+std::string compressedBinary(const std::vector<std::string>& blocks)
+{
+  std::string header = littleEndian32(static_cast<std::uint32_t>(blocks.size())) +
+    littleEndian32(static_cast<std::uint32_t>(blocks.front().size())) +
+    littleEndian32(static_cast<std::uint32_t>(blocks.back().size()));
+  std::string data;
+  for (const std::string& block : blocks)
+  {
+    header += littleEndian32(static_cast<std::uint32_t>(block.size()));
+    data += block;
+  }
+  return base64(header) + base64(data);
+}
+
+// A "decompressor" of stored blocks, counting its calls.
+struct StoredBlocks
+{
+  int calls = 0;
+  bool fail = false;
+  VTPDecompressor decompressor()
+  {
+    return [this](const std::string& compressor, const unsigned char* in, std::size_t inSize, unsigned char* out,
+             std::size_t outSize)
+    {
+      ++calls;
+      if (fail || compressor != "vtkZLibDataCompressor" || inSize != outSize)
+        return false;
+      std::copy(in, in + inSize, out);
+      return true;
+    };
+  }
+};
+
+// polyData() compressed, with `offsets` and `strings` (field data) given.
+std::string compressedPolyData(const std::string& strings, const std::string& offsets)
+{
+  std::string text = polyData(strings, kAsciiPoints);
+  text.replace(text.find("header_type=\"UInt32\""), 20, "header_type=\"UInt32\" compressor=\"vtkZLibDataCompressor\"");
+  text.replace(text.find("format=\"ascii\">3</DataArray>"), 28, "format=\"binary\">" + offsets + "</DataArray>");
+  return text;
+}
+
+std::string int64(std::uint64_t value)
+{
+  std::string out;
+  for (int b = 0; b < 8; ++b)
+    out.push_back(static_cast<char>((value >> (8 * b)) & 0xff));
+  return out;
+}
+
+} // namespace
+
+TEST(VTPCheck, ChecksCompressedValuesWithADecompressor)
+{
+  // A compressed last offset of 2^41 made VTK 9.2 abort; it straddles the
+  // two blocks here.
+  const std::string offset = int64(std::uint64_t(1) << 41);
+  const std::string path = writeTempFile("offset-compressed.vtp",
+    compressedPolyData("", compressedBinary({ offset.substr(0, 4), offset.substr(4) })));
+  EXPECT_EQ(checkVTPFile(path).message(), "") << "without a decompressor compressed values are not seen";
+  StoredBlocks stored;
+  std::string message = checkVTPFile(path, stored.decompressor()).message();
+  EXPECT_NE(message.find("offset-compressed.vtp:14: DataArray 'offsets': its last offset, 2199023255552, is beyond "
+                         "the 3 values of the connectivity"),
+    std::string::npos)
+    << message;
+  EXPECT_EQ(stored.calls, 2) << "both blocks hold part of the last value";
+
+  const std::string strings = "      <Array type=\"String\" Name=\"SourceFile\" NumberOfTuples=\"1\" format=\"binary\">" +
+    compressedBinary({ std::string("a\0b", 3), std::string("\0", 1) }) + "</Array>\n";
+  message = checkVTPFile(writeTempFile("strings-compressed.vtp", compressedPolyData(strings, compressedBinary({ int64(3) }))),
+    stored.decompressor())
+              .message();
+  EXPECT_NE(message.find("strings-compressed.vtp:5: Array 'SourceFile' holds 2 strings but declares 1"),
+    std::string::npos)
+    << message;
+}
+
+TEST(VTPCheck, AcceptsGoodCompressedValuesAndRefusesABlockThatDoesNotDecompress)
+{
+  const std::string strings = "      <Array type=\"String\" Name=\"SourceFile\" NumberOfTuples=\"2\" format=\"binary\">" +
+    compressedBinary({ std::string("a\0b", 3), std::string("\0", 1) }) + "</Array>\n";
+  const std::string path =
+    writeTempFile("good-compressed.vtp", compressedPolyData(strings, compressedBinary({ int64(3) })));
+  StoredBlocks stored;
+  EXPECT_EQ(checkVTPFile(path, stored.decompressor()).message(), "");
+  EXPECT_EQ(stored.calls, 3);
+  stored.fail = true;
+  const std::string message = checkVTPFile(path, stored.decompressor()).message();
+  EXPECT_NE(message.find("good-compressed.vtp:5: Array 'SourceFile': its compressed block 0 does not decompress to 3 "
+                         "bytes"),
     std::string::npos)
     << message;
 }

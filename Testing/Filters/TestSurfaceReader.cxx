@@ -2,6 +2,7 @@
 #include "vtkCMPLandmarksFromFile.h"
 #include "vtkCMPSurfaceReader.h"
 
+#include <vtkBase64Utilities.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -16,6 +17,7 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkZLibDataCompressor.h>
 
 #include <cmp/io/VTPCheck.h>
 
@@ -412,4 +414,92 @@ TEST(SurfaceReader, KeepsThePLYAttributesVTKsReaderKept)
   expectSameArray(ours->GetPointData()->GetTCoords(), theirs->GetPointData()->GetTCoords(), "TCoords");
   expectSameArray(ours->GetCellData()->GetScalars(), theirs->GetCellData()->GetScalars(), "cell RGB");
   EXPECT_EQ(ours->GetPointData()->GetArray("quality"), nullptr) << "VTK's reader dropped other properties";
+}
+
+namespace
+{
+
+// Base64 as VTK writes it.
+std::string base64(const std::string& bytes)
+{
+  std::string out(bytes.size() * 4 / 3 + 8, '\0');
+  const std::size_t size = vtkBase64Utilities::Encode(reinterpret_cast<const unsigned char*>(bytes.data()),
+    bytes.size(), reinterpret_cast<unsigned char*>(&out[0]));
+  out.resize(size);
+  return out;
+}
+
+std::string littleEndian64(std::uint64_t value)
+{
+  std::string out;
+  for (int b = 0; b < 8; ++b)
+    out.push_back(static_cast<char>((value >> (8 * b)) & 0xff));
+  return out;
+}
+
+// A zlib-compressed inline binary array of `bytes` in one block, as
+// vtkXMLPolyDataWriter writes it with a UInt64 header.
+std::string zlibArray(const std::string& bytes)
+{
+  vtkNew<vtkZLibDataCompressor> zlib;
+  vtkSmartPointer<vtkUnsignedCharArray> packed = vtk::TakeSmartPointer(
+    zlib->Compress(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+  const std::string data(reinterpret_cast<const char*>(packed->GetPointer(0)), packed->GetNumberOfValues());
+  return base64(littleEndian64(1) + littleEndian64(bytes.size()) + littleEndian64(bytes.size()) +
+           littleEndian64(data.size())) +
+    base64(data);
+}
+
+// A compressed one-triangle VTP whose offsets end at `lastOffset`, with the
+// field data `fields`.
+std::string compressedTriangle(std::uint64_t lastOffset, const std::string& fields = "")
+{
+  std::string points;
+  for (float value : { 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f })
+    points.append(reinterpret_cast<const char*>(&value), sizeof(value)); // little endian, as the header says
+  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n<PolyData>\n<FieldData>" +
+    fields + "</FieldData>\n<Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\">\n<Points><DataArray type=\"Float32\" " +
+    "NumberOfComponents=\"3\" format=\"binary\">" + zlibArray(points) + "</DataArray></Points>\n" +
+    "<Polys><DataArray type=\"Int64\" Name=\"connectivity\" format=\"binary\">" +
+    zlibArray(littleEndian64(0) + littleEndian64(1) + littleEndian64(2)) + "</DataArray>" +
+    "<DataArray type=\"Int64\" Name=\"offsets\" format=\"binary\">" + zlibArray(littleEndian64(lastOffset)) +
+    "</DataArray></Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+}
+
+} // namespace
+
+TEST(SurfaceReader, ChecksCompressedVTPValuesWithVTKsDecompressors)
+{
+  // Zlib hides these from a check that does not decompress; VTK 9.2 then
+  // aborted allocating 2^41 values, or wrote past its string array.
+  readSurface(writeTempFile("compressed-ok.vtp", compressedTriangle(3)));
+  EXPECT_NE(expectReadError("compressed-offset.vtp", compressedTriangle(std::uint64_t(1) << 41))
+              .find("compressed-offset.vtp:7: DataArray 'offsets': its last offset, 2199023255552, is beyond the 3 "
+                    "values of the connectivity"),
+    std::string::npos);
+  const std::string strings = "<Array type=\"String\" Name=\"S\" NumberOfTuples=\"1\" format=\"binary\">" +
+    zlibArray(std::string("a\0b\0c\0", 6)) + "</Array>";
+  EXPECT_NE(expectReadError("compressed-strings.vtp", compressedTriangle(3, strings))
+              .find("compressed-strings.vtp:4: Array 'S' holds 3 strings but declares 1"),
+    std::string::npos);
+}
+
+TEST(SurfaceReader, RefusesAVTPTriangleWithAPointIdOutOfRange)
+{
+  // VTK's reader passes connectivity on unchecked; welding (the file has a
+  // point twice) and every filter after it read points by these ids.
+  for (const char* id : { "7", "-1", "100000000" })
+  {
+    const std::string text = std::string("<VTKFile type=\"PolyData\" version=\"1.0\">\n<PolyData>\n") +
+      "<Piece NumberOfPoints=\"4\" NumberOfPolys=\"1\">\n<Points><DataArray type=\"Float32\" " +
+      "NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 1 0</DataArray></Points>\n" +
+      "<Polys><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 " + id +
+      "</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys>\n" +
+      "</Piece>\n</PolyData>\n</VTKFile>\n";
+    EXPECT_NE(expectReadError("id.vtp", text).find(std::string("id.vtp: cell 0 refers to point ") + id +
+                ", but the surface has 4 points"),
+      std::string::npos)
+      << id;
+  }
 }

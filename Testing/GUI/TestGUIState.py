@@ -50,8 +50,11 @@ def main():
                "--script=" + os.path.join(HERE, "gui_checks.py"), "--test-script=" + os.path.join(HERE, "no_events.xml"),
                "--test-baseline=" + args.baseline, "--test-threshold=%d" % THRESHOLD,
                "--test-directory=" + args.output, "--exit"]
+    # Below ctest's timeout (300 s times the same factor): a report, not a kill.
+    factor = os.environ.get("CMP_TEST_TIMEOUT_FACTOR", "1")
+    factor = int(factor) if factor.isdigit() and int(factor) > 0 else 1
     result = subprocess.run(command, env=environment, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            universal_newlines=True, timeout=240)  # below ctest's 300 s: a report, not a kill
+                            universal_newlines=True, timeout=240 * factor)
     log = result.stdout
     with open(os.path.join(args.output, "paraview.log"), "w") as out:
         out.write(log)

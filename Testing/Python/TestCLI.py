@@ -4,7 +4,7 @@
                      [--pictures [--keep-pictures DIR]] CASE
 
 CASE is one of: shipped-examples, collection, given-base-domain,
-failure-isolation, argument-errors, base-domain-mismatch. Every case but
+failure-isolation, crash-isolation, argument-errors, base-domain-mismatch. Every case but
 argument-errors and shipped-examples needs the shared data (shipped-examples
 takes the project's Data folder). Each run writes into a fresh temporary
 folder.
@@ -41,7 +41,9 @@ from cmp_test_support import (
     landmarked_shrec_models,
     read_off_header,
     read_pinned,
+    timeout_factor,
     triangles_of,
+    write_compressed_vtp,
     write_off,
     write_text,
 )
@@ -65,8 +67,10 @@ def run_cli(arguments, output=None, display=None, environment=None, folder=None)
         if display:
             env["DISPLAY"] = display
     command = [COMMAND] + list(arguments) + (["--output", output] if output else [])
+    # 300 s per run on an idle machine, scaled as ctest scales the test's
+    # own timeout: beside other builds the 11-model collection took longer.
     result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            universal_newlines=True, timeout=300, cwd=folder)
+                            universal_newlines=True, timeout=300 * timeout_factor(), cwd=folder)
     check("Traceback" not in result.stderr and "Traceback" not in result.stdout,
           "consistent-remesh printed a traceback:\n" + result.stderr)
     report = None
@@ -1102,6 +1106,58 @@ def case_failure_isolation(tmp):
     check_stages_without_a_model(tmp, good, garbage)
 
 
+def case_crash_isolation(tmp):
+    """A model whose reading or processing crashes the process doing it
+    (CMP_TEST_CRASH killing that model's child with a signal) fails alone
+    with the reason, and so does a file that made VTK abort before the
+    Surface Reader checked its compressed values; the others are remeshed
+    and the report is written. A base domain file that makes VTK's reader
+    abort (--base-domain reads .vtp with it, unchecked) gives no base
+    domain, and the report."""
+    crashing = write_compressed_vtp(os.path.join(tmp, "crashing.vtp"), 2 ** 41)
+    six = write_text(os.path.join(tmp, "six.txt"), "0\n1\n2\n3\n4\n5\n")
+    good = [(shrec("381", "off"), shrec("381", "vts")), (shrec("384", "off"), shrec("384", "vts"))]
+    pairs = [good[0], (crashing, six), (shrec("382", "off"), shrec("382", "vts")), good[1],
+             (shrec("391", "off"), shrec("391", "vts"))]
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(
+        model_arguments(pairs) + ["--base-domain-from", "0", "--level", "1", "--no-render"], out,
+        environment={"CMP_TEST_CRASH": "read:382:SIGSEGV,process:391:SIGABRT"})
+    check(report is not None, "no report.json after crashes (status %d, stderr: %s)" % (status, stderr))
+    check_equal(status, 1, "exit status with crashed models (stderr: %s)" % stderr)
+    check_equal(sorted(report["failed"]), ["382", "391", "crashing"], "failed models")
+    expected = {
+        "crashing": "its last offset, 2199023255552, is beyond the 24 values of the connectivity",
+        "382": "crashed while reading and checking its files: the process doing it was killed by SIGSEGV",
+        "391": "crashed while tracing and straightening its net: the process doing it was killed by SIGABRT",
+    }
+    for name, message in expected.items():
+        model = report["models"][name]
+        check_equal(model.get("status"), "failed", "status of " + name)
+        check_contains(model.get("error", ""), message, "error of " + name)
+        check_contains(stdout, "FAILED: " + model["error"], "summary line of " + name)
+    # What 391's read found is kept; its processing left no files behind
+    # that claim a result.
+    check_equal(report["models"]["391"].get("vertices"), read_off_header(shrec("391", "off"))[0], "391's vertices")
+    check("straighten" not in report["models"]["391"], "391 crashed, yet has straighten figures")
+    for name in ("381", "384"):
+        check_equal(report["models"][name].get("status"), "ok", "status of " + name)
+        check_straightened(out, name, report["models"][name])
+    check_remeshed(out, report, stdout, ["381", "384"], 1)
+
+    # A base domain file that crashes its reader: no base domain (exit
+    # status 3), the report says why.
+    out = os.path.join(tmp, "out-domain")
+    status, stdout, stderr, report = run_cli(model_arguments(good) + ["--base-domain", crashing, "--no-render"], out)
+    check_equal(status, 3, "exit status with a crashing base domain (stderr: %s)" % stderr)
+    check(report is not None, "no report.json after the base domain crashed")
+    check_contains(report["base_domain"].get("error", ""),
+                   "crashed while reading the base domain: the process doing it was killed by SIGABRT",
+                   "base domain error")
+    for name in ("381", "384"):
+        check_contains(report["models"][name].get("error", ""), "no base domain", "error of " + name)
+
+
 def check_stages_without_a_model(tmp, good, garbage):
     """With a model failed, PCA and the blend grid work on the models that
     were remeshed, two here: one mode, one row of blends. Weights given for
@@ -1458,6 +1514,7 @@ CASES = {
     "collection": case_collection,
     "given-base-domain": case_given_base_domain,
     "failure-isolation": case_failure_isolation,
+    "crash-isolation": case_crash_isolation,
     "lower-stretch": case_lower_stretch,
     "free-curves": case_free_curves,
     "fold-repair": case_fold_repair,

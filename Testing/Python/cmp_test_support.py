@@ -295,3 +295,42 @@ def landmarked_shrec_models(data):
             if os.path.exists(vts):
                 models.append((name[:-4], os.path.join(folder, name), vts))
     return models
+
+
+def write_compressed_vtp(path, last_offset):
+    """An octahedron as a zlib-compressed .vtp whose Polys offsets end at
+    `last_offset` instead of 24. With a huge last offset VTK 9.2's XML
+    reader aborts the process ("Unable to allocate" the connectivity it
+    claims); the Surface Reader's check refuses the file first."""
+    import base64
+    import struct
+    import zlib
+
+    def array(name, vtk_type, values, code, components=1):
+        raw = struct.pack("<%d%s" % (len(values), code), *values)
+        packed = zlib.compress(raw)
+        header = struct.pack("<QQQQ", 1, len(raw), len(raw), len(packed))
+        return '<DataArray type="%s" Name="%s" NumberOfComponents="%d" format="binary">%s%s</DataArray>' % (
+            vtk_type, name, components, base64.b64encode(header).decode(), base64.b64encode(packed).decode())
+
+    points = [coordinate for point in OCTAHEDRON_POINTS for coordinate in point]
+    connectivity = [index for triangle in OCTAHEDRON_TRIANGLES for index in triangle]
+    offsets = [3 * (i + 1) for i in range(len(OCTAHEDRON_TRIANGLES))]
+    offsets[-1] = last_offset
+    return write_text(path, "".join([
+        '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" '
+        'header_type="UInt64" compressor="vtkZLibDataCompressor">\n<PolyData>\n',
+        '<Piece NumberOfPoints="%d" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="%d">\n'
+        % (len(OCTAHEDRON_POINTS), len(OCTAHEDRON_TRIANGLES)),
+        "<Points>%s</Points>\n" % array("Points", "Float64", points, "d", 3),
+        "<Polys>%s%s</Polys>\n" % (array("connectivity", "Int64", connectivity, "q"),
+                                   array("offsets", "Int64", offsets, "q")),
+        "</Piece>\n</PolyData>\n</VTKFile>\n"]))
+
+
+def timeout_factor():
+    """CMP_TEST_TIMEOUT_FACTOR, which ctest passes to these tests and by which
+    it multiplies their timeouts (1 when a test is run by hand): a time limit
+    inside a test must be scaled the same way."""
+    value = os.environ.get("CMP_TEST_TIMEOUT_FACTOR", "1")
+    return int(value) if value.isdigit() and int(value) > 0 else 1

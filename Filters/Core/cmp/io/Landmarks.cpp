@@ -56,7 +56,8 @@ Status mapFileId(long id, const std::vector<int>& fileToMeshPoint, int vertexCou
 Status parseIdList(const std::string& path, const std::string& text, const TriangleMesh& mesh,
   const std::vector<int>& fileToMeshPoint, bool withPositions, LandmarkList& landmarks)
 {
-  const double tolerance = kVtsPositionTolerance * boundingBoxDiagonal(mesh);
+  // Only .vts positions need it; the diagonal is a pass over every point.
+  const double tolerance = withPositions ? kVtsPositionTolerance * boundingBoxDiagonal(mesh) : 0.0;
   LineReader lines(text);
   std::string line;
   while (lines.next(line))

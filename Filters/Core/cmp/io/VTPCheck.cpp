@@ -165,15 +165,19 @@ struct BlockData
 {
   bool compressed = false;
   Count bytes = 0;       // uncompressed bytes
-  std::size_t at = 0;    // where the data starts (uncompressed only)
+  std::size_t at = 0;    // where the data starts (for compressed data, the first block's)
+  Count blockSize = 0;   // compressed: the uncompressed size of every block but the last
+  Count lastSize = 0;    // compressed: the last block's
+  std::vector<Count> compressedSizes; // compressed: each block's compressed size
 };
 
 class VTPChecker
 {
 public:
-  VTPChecker(const std::string& path, const std::string& text)
+  VTPChecker(const std::string& path, const std::string& text, const VTPDecompressor& decompress)
     : path_(path)
     , text_(text)
+    , decompress_(decompress)
   {
   }
   Status check();
@@ -192,6 +196,9 @@ private:
   Status checkBlocks(const std::string& where, const std::string& decoded, std::size_t at, Count need, BlockData& block);
   Status checkBinaryArray(const ArrayInfo& array, const std::string& data, std::size_t at);
   Status checkStringCount(const ArrayInfo& array, Count strings) const;
+  Status decompressBlock(const ArrayInfo& array, const std::string& data, const BlockData& block, Count index,
+    std::string& raw) const;
+  Status checkCompressedArray(const ArrayInfo& array, const std::string& data, const BlockData& block);
   Status checkCellArrays() const;
   Count readValue(const std::string& bytes, std::size_t at, const std::string& type) const;
   Status checkAppended(const Tag& tag);
@@ -199,6 +206,8 @@ private:
 
   const std::string& path_;
   const std::string& text_;
+  const VTPDecompressor& decompress_;
+  std::string compressor_;
   std::size_t pos_ = 0;
   std::size_t linePos_ = 0;
   int line_ = 1;
@@ -319,6 +328,7 @@ Status VTPChecker::checkRoot(const Tag& tag)
   }
   if (const auto it = a.find("compressor"); it != a.end() && !it->second.empty())
   {
+    compressor_ = it->second;
     if (it->second == "vtkZLibDataCompressor" || it->second == "vtkLZ4DataCompressor")
       ratio_ = 1032;
     else if (it->second == "vtkLZMADataCompressor")
@@ -372,8 +382,12 @@ Status VTPChecker::checkBlocks(
     return Status::error(where + ": its header claims " + std::to_string(blocks) +
       " compressed blocks, more than the data can describe");
   Count compressed = 0;
+  block.compressedSizes.resize(static_cast<std::size_t>(blocks));
   for (Count b = 0; b < blocks; ++b)
-    compressed = sum(compressed, readHeaderInt(data, at + (3 + b) * headerSize_));
+  {
+    block.compressedSizes[b] = readHeaderInt(data, at + (3 + b) * headerSize_);
+    compressed = sum(compressed, block.compressedSizes[b]);
+  }
   const Count headerBytes = (3 + blocks) * headerSize_;
   if (compressed > present - headerBytes)
     return Status::error(where + ": its header claims " + std::to_string(compressed) + " compressed bytes but " +
@@ -387,6 +401,72 @@ Status VTPChecker::checkBlocks(
     return Status::error(where + ": needs " + std::to_string(need) + " bytes but its data has " +
       std::to_string(uncompressed));
   block.bytes = uncompressed;
+  block.at = at + static_cast<std::size_t>(headerBytes);
+  block.blockSize = blockSize;
+  block.lastSize = lastSize == 0 ? blockSize : lastSize;
+  return {};
+}
+
+// Block `index` of a compressed array, decompressed into `raw`.
+Status VTPChecker::decompressBlock(
+  const ArrayInfo& array, const std::string& data, const BlockData& block, Count index, std::string& raw) const
+{
+  std::size_t at = block.at;
+  for (Count b = 0; b < index; ++b)
+    at += static_cast<std::size_t>(block.compressedSizes[b]);
+  const Count size = index + 1 == block.compressedSizes.size() ? block.lastSize : block.blockSize;
+  raw.assign(static_cast<std::size_t>(size), '\0');
+  const auto* in = reinterpret_cast<const unsigned char*>(data.data() + at);
+  if (!decompress_(compressor_, in, static_cast<std::size_t>(block.compressedSizes[index]),
+        reinterpret_cast<unsigned char*>(&raw[0]), raw.size()))
+    return Status::error(array.what + ": its compressed block " + std::to_string(index) + " does not decompress to " +
+      std::to_string(size) + " bytes");
+  return {};
+}
+
+// The checks of values (string counts, last offsets) on compressed data:
+// a string array's blocks one after another, an offsets array's last value
+// from its last blocks.
+Status VTPChecker::checkCompressedArray(const ArrayInfo& array, const std::string& data, const BlockData& block)
+{
+  const Count blocks = block.compressedSizes.size();
+  std::string raw;
+  if (array.type == "String")
+  {
+    Count strings = 0;
+    for (Count b = 0; b < blocks; ++b)
+    {
+      if (Status s = decompressBlock(array, data, block, b, raw); !s.ok())
+        return s;
+      strings += static_cast<Count>(std::count(raw.begin(), raw.end(), '\0'));
+    }
+    return checkStringCount(array, strings);
+  }
+  if (array.cells.empty() || array.size == 0)
+    return {};
+  CellArrays& cells = cellArrays_[array.cells];
+  if (array.isConnectivity)
+  {
+    cells.haveConnectivity = true;
+    cells.connectivity = block.bytes / static_cast<Count>(array.size);
+  }
+  const Count size = static_cast<Count>(array.size);
+  if (array.isOffsets && block.bytes >= size && blocks > 0)
+  {
+    // The last value's bytes, which can start in the block before the last.
+    std::string tail;
+    for (Count b = blocks; b-- > 0 && tail.size() < size;)
+    {
+      if (Status s = decompressBlock(array, data, block, b, raw); !s.ok())
+        return s;
+      tail = raw + tail;
+    }
+    if (tail.size() < size)
+      return Status::error(array.what + ": its compressed blocks hold less than one value");
+    cells.haveLastOffset = true;
+    cells.lastOffset = readValue(tail, tail.size() - array.size, array.type);
+    cells.where = array.what;
+  }
   return {};
 }
 
@@ -424,7 +504,7 @@ Status VTPChecker::checkBinaryArray(const ArrayInfo& array, const std::string& d
   if (Status s = checkBlocks(array.what, data, at, array.need, block); !s.ok())
     return s;
   if (block.compressed)
-    return {}; // its values cannot be seen without decompressing
+    return decompress_ ? checkCompressedArray(array, data, block) : Status{}; // else its values cannot be seen
   if (array.type == "String")
   {
     const auto begin = data.begin() + static_cast<std::ptrdiff_t>(block.at);
@@ -705,12 +785,12 @@ Status VTPChecker::check()
 
 } // namespace
 
-Status checkVTPFile(const std::string& path)
+Status checkVTPFile(const std::string& path, const VTPDecompressor& decompress)
 {
   std::string text;
   if (Status s = readFileBytes(path, text); !s.ok())
     return s;
-  return VTPChecker(path, text).check();
+  return VTPChecker(path, text, decompress).check();
 }
 
 } // namespace cmp

@@ -5,10 +5,19 @@
 
 #include <cmp/mesh/Status.h>
 
+#include <cstddef>
+#include <functional>
 #include <string>
 
 namespace cmp
 {
+
+/// \brief Decompresses one block of a compressed array: `compressor` is the
+///        file's (`vtkZLibDataCompressor`, `vtkLZ4DataCompressor` or
+///        `vtkLZMADataCompressor`); `raw` must receive exactly `rawSize`
+///        bytes. Returns false if the block does not decompress to that.
+using VTPDecompressor = std::function<bool(const std::string& compressor, const unsigned char* compressed,
+  std::size_t compressedSize, unsigned char* raw, std::size_t rawSize)>;
 
 /// \brief Refuses a `.vtp` file that VTK 9.2's `vtkXMLPolyDataReader` could
 ///        crash on or exhaust memory with; accepts every file VTK writes.
@@ -38,9 +47,13 @@ namespace cmp
 ///   cell array's last offset does not exceed the values its connectivity
 ///   holds (VTK allocates the connectivity by it).
 ///
-/// It does not decompress data, so a crafted compressed file can still
-/// carry a string count or a last offset that VTK trusts; nor does it check
-/// other values (for example connectivity ids): VTK's reader reports those.
-Status checkVTPFile(const std::string& path);
+/// The core has no zlib, LZ4 or LZMA: given `decompress` (the Surface Reader
+/// passes VTK's own compressors), the string counts and last offsets of
+/// compressed arrays are checked too, one block at a time, and a block that
+/// does not decompress to the size its header claims fails the check.
+/// Without it a crafted compressed file can still carry a string count or a
+/// last offset that VTK trusts. Other values (for example connectivity ids)
+/// are not checked: VTK's reader reports those.
+Status checkVTPFile(const std::string& path, const VTPDecompressor& decompress = {});
 
 } // namespace cmp

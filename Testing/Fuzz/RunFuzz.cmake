@@ -1,0 +1,107 @@
+# Runs libFuzzer targets (cmake -P, from Testing/Fuzz/CMakeLists.txt).
+#   MODE=test:   FUZZERS (one) on a fresh corpus WORK/corpus seeded with
+#                SEEDS, RUNS inputs, seed 1: the same inputs every time.
+#   MODE=replay: FUZZERS (one) on every file in SEEDS once.
+#   MODE=long:   each of FUZZERS (comma-separated; SEEDS the same way) for
+#                SECONDS on the corpus WORK/NAME/corpus, kept between runs;
+#                crashing inputs go to WORK/NAME/crashes/; writes RESULTS.
+# A crash, a leak, undefined behaviour, an input running over 10 s or an
+# RSS over 2 GB ends a run with a non-zero status and the input kept.
+
+foreach(_variable MODE FUZZERS SEEDS WORK)
+  if(NOT DEFINED ${_variable})
+    message(FATAL_ERROR "RunFuzz.cmake needs -D${_variable}=...")
+  endif()
+endforeach()
+
+# The targets write each input to a file in TMPDIR: memory if there is some.
+set(_tmp "$ENV{TMPDIR}")
+if(IS_DIRECTORY "/dev/shm")
+  set(_tmp "/dev/shm")
+elseif(NOT _tmp)
+  set(_tmp "/tmp")
+endif()
+set(_common -timeout=10 -rss_limit_mb=2048 -print_final_stats=1)
+
+# _cmp_fuzz(<result var> <output var> ARGS...): runs one fuzzer.
+function(_cmp_fuzz result output)
+  execute_process(COMMAND "${CMAKE_COMMAND}" -E env "TMPDIR=${_tmp}" ${ARGN}
+    RESULT_VARIABLE _result OUTPUT_VARIABLE _output ERROR_VARIABLE _output)
+  set(${result} "${_result}" PARENT_SCOPE)
+  set(${output} "${_output}" PARENT_SCOPE)
+endfunction()
+
+# _cmp_stat(<var> <output> <name>): a stat::NAME of -print_final_stats.
+function(_cmp_stat variable output name)
+  set(_value "")
+  if(output MATCHES "stat::${name}: *([0-9]+)")
+    set(_value "${CMAKE_MATCH_1}")
+  endif()
+  set(${variable} "${_value}" PARENT_SCOPE)
+endfunction()
+
+if(MODE STREQUAL "test")
+  file(REMOVE_RECURSE "${WORK}")
+  file(MAKE_DIRECTORY "${WORK}/corpus")
+  _cmp_fuzz(_result _output "${FUZZERS}" -seed=1 -runs=${RUNS} -max_len=${MAX_LEN} ${_common}
+    "-artifact_prefix=${WORK}/" "${WORK}/corpus" "${SEEDS}")
+  message("${_output}")
+  _cmp_stat(_runs "${_output}" number_of_executed_units)
+  if(NOT _result EQUAL 0 OR NOT _runs)
+    message(FATAL_ERROR "${FUZZERS} failed (status ${_result}); the input is in ${WORK}/")
+  endif()
+  message("${FUZZERS}: ${_runs} inputs, no crash")
+elseif(MODE STREQUAL "replay")
+  file(GLOB _inputs "${SEEDS}/*")
+  if(NOT _inputs)
+    message(FATAL_ERROR "no inputs in ${SEEDS}")
+  endif()
+  file(MAKE_DIRECTORY "${WORK}")
+  _cmp_fuzz(_result _output "${FUZZERS}" ${_common} "-artifact_prefix=${WORK}/" ${_inputs})
+  message("${_output}")
+  list(LENGTH _inputs _count)
+  if(NOT _result EQUAL 0)
+    message(FATAL_ERROR "${FUZZERS} crashed on one of the ${_count} inputs in ${SEEDS}")
+  endif()
+  message("${FUZZERS}: ${_count} regression inputs, no crash")
+elseif(MODE STREQUAL "long")
+  string(REPLACE "," ";" _fuzzers "${FUZZERS}")
+  string(REPLACE "," ";" _seeds "${SEEDS}")
+  set(_table "| target | seconds | inputs run | inputs per second | corpus files | status | crashing inputs kept |\n")
+  string(APPEND _table "|---|---|---|---|---|---|---|\n")
+  set(_failed "")
+  foreach(_fuzzer _seed IN ZIP_LISTS _fuzzers _seeds)
+    get_filename_component(_name "${_fuzzer}" NAME)
+    set(_work "${WORK}/${_name}")
+    file(MAKE_DIRECTORY "${_work}/corpus" "${_work}/crashes")
+    message(STATUS "${_name}: fuzzing for ${SECONDS} s")
+    string(TIMESTAMP _start "%s")
+    _cmp_fuzz(_result _output "${_fuzzer}" -max_total_time=${SECONDS} -max_len=${MAX_LEN} ${_common}
+      "-artifact_prefix=${_work}/crashes/" "${_work}/corpus" "${_seed}")
+    string(TIMESTAMP _end "%s")
+    math(EXPR _seconds "${_end} - ${_start}")
+    file(WRITE "${_work}/last-run.log" "${_output}")
+    _cmp_stat(_runs "${_output}" number_of_executed_units)
+    _cmp_stat(_rate "${_output}" average_exec_per_sec)
+    file(GLOB _corpus "${_work}/corpus/*")
+    list(LENGTH _corpus _corpus_count)
+    file(GLOB _crashes "${_work}/crashes/*")
+    list(LENGTH _crashes _crash_count)
+    if(_result EQUAL 0)
+      set(_status "ok")
+    else()
+      set(_status "FAILED (${_result}), see ${_work}/last-run.log")
+      list(APPEND _failed "${_name}")
+    endif()
+    message(STATUS "${_name}: ${_runs} inputs in ${_seconds} s, ${_status}")
+    string(APPEND _table "| ${_name} | ${_seconds} | ${_runs} | ${_rate} | ${_corpus_count} | ${_status} | ${_crash_count} |\n")
+  endforeach()
+  file(WRITE "${RESULTS}" "# Fuzzing the core's readers\n\n${SECONDS} s per target, inputs up to ${MAX_LEN} bytes.\n\n${_table}")
+  message("${_table}")
+  message(STATUS "written: ${RESULTS}")
+  if(_failed)
+    message(FATAL_ERROR "fuzzing found crashes in: ${_failed} (inputs kept under ${WORK}/NAME/crashes)")
+  endif()
+else()
+  message(FATAL_ERROR "MODE must be test, replay or long, not '${MODE}'")
+endif()
