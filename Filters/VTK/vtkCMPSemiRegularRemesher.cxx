@@ -1,11 +1,11 @@
 #include "vtkCMPSemiRegularRemesher.h"
 
-#include <cmp/basedomain/BaseDomainBuilder.h> // triangleShapeQuality
 #include <cmp/remesh/FoldRepair.h>
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/remesh/SampleRelaxation.h>
 #include <cmp/remesh/SemiRegularRemesher.h>
 #include <cmp/mesh/SurfaceDistance.h>
+#include <cmp/mesh/TriangleShape.h>
 #include "vtkCMPCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPParameterizedInput.h"
@@ -218,22 +218,11 @@ RemeshQuality measureQuality(const cmp::SemiRegularMesh& remesh, const std::vect
   const std::vector<cmp::SurfaceSample>& samples, const cmp::EditableMesh& surface)
 {
   RemeshQuality quality;
-  double minimumAngle = M_PI, qualitySum = 0.0;
-  for (const cmp::Triangle& tri : remesh.triangles)
-  {
-    const cmp::Vec3 &a = positions[tri[0]], &b = positions[tri[1]], &c = positions[tri[2]];
-    for (int k = 0; k < 3; ++k)
-    {
-      const cmp::Vec3 e1 = positions[tri[(k + 1) % 3]] - positions[tri[k]];
-      const cmp::Vec3 e2 = positions[tri[(k + 2) % 3]] - positions[tri[k]];
-      minimumAngle = std::min(minimumAngle, std::atan2(e1.cross(e2).norm(), e1.dot(e2)));
-    }
-    qualitySum += cmp::triangleShapeQuality(a, b, c);
-  }
+  const cmp::TriangleShapeSummary shape = cmp::measureTriangleShapes(positions, remesh.triangles);
   quality.folded = cmp::foldedTriangles(remesh, surface, samples);
   quality.flippedTriangles = static_cast<int>(std::count(quality.folded.begin(), quality.folded.end(), 1));
-  quality.minimumAngleDegrees = minimumAngle * 180.0 / M_PI;
-  quality.meanShapeQuality = qualitySum / std::max<std::size_t>(1, remesh.triangles.size());
+  quality.minimumAngleDegrees = shape.minimumAngleDegrees;
+  quality.meanShapeQuality = shape.meanShapeQuality;
   return quality;
 }
 
