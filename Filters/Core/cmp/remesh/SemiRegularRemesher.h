@@ -129,6 +129,9 @@ public:
   /// \brief True once `build()` succeeded.
   bool built() const { return index_ != nullptr; }
 
+  /// \brief The layout it was built on. \pre `built()`.
+  const TracedNet& net() const { return *net_; }
+
   /// \brief Calls `visit(patch, image, area)` for every surface triangle:
   ///        its patch, its image's corners in barycentric coordinates
   ///        (c1, c2) of that patch's base triangle, and its surface area.
