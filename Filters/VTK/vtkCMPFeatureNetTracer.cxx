@@ -124,10 +124,8 @@ vtkSmartPointer<vtkPolyData> refinedSurface(
 /// Runs the independent layout check on the traced net.
 bool layoutIsValid(const cmp::TracedNet& net, const cmp::BaseDomain& domain, std::string& problem)
 {
-  const std::vector<std::string> problems =
-    cmp::validateLayout(cmp::toLabelledSurface(net, domain), cmp::toBaseTriangles(domain));
-  problem = problems.empty() ? "" : problems.front();
-  return problems.empty();
+  problem = cmp::layoutProblem(cmp::toLabelledSurface(net, domain), domain);
+  return problem.empty();
 }
 
 } // namespace

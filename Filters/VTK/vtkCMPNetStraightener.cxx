@@ -66,13 +66,6 @@ std::string propertyProblem(int sweeps, double tolerance, double snap)
   return problem.str();
 }
 
-/// The first problem the independent layout check finds, or "".
-std::string layoutProblem(const cmp::LabelledSurface& surface, const cmp::BaseDomain& domain)
-{
-  const std::vector<std::string> problems = cmp::validateLayout(surface, cmp::toBaseTriangles(domain));
-  return problems.empty() ? "" : problems.front();
-}
-
 /// Point data of the straightened surface: every input array interpolated
 /// with the input location of each new vertex, FeatureId written anew, and
 /// the base-domain coordinates.

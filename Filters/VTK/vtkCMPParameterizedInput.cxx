@@ -21,13 +21,6 @@ namespace cmp::bridge
 namespace
 {
 
-/// The first problem the independent layout check finds, or "".
-std::string layoutProblem(const LabelledSurface& surface, const BaseDomain& domain)
-{
-  const std::vector<std::string> problems = validateLayout(surface, toBaseTriangles(domain));
-  return problems.empty() ? "" : problems.front();
-}
-
 /// Reads the surface and checks what sampling relies on: finite
 /// coordinates and a closed genus-0 manifold. Zero-area triangles are
 /// accepted: the straightener's cuts may leave some, and a point sampled in
