@@ -2,6 +2,7 @@
 
 #include <cmp/analysis/DetailTransfer.h>
 #include <cmp/analysis/LoopWavelet.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
 #include "vtkCMPConsistentCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPPolyDataBridge.h"
@@ -219,6 +220,12 @@ int vtkCMPWaveletDetailTransfer::RequestData(
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkMultiBlockDataSet* levelsOutput = vtkMultiBlockDataSet::GetData(outputVector, 1);
+  // The properties are the same on every rank: a bad one stops them all.
+  if (!cmp::isRemeshLevel(this->LastCoarseLevel))
+  {
+    vtkErrorMacro(<< cmp::remeshLevelProblem("LastCoarseLevel", this->LastCoarseLevel));
+    return 0;
+  }
   cmp::bridge::ControllerCommunicator communicator(this->Controller);
   cmp::bridge::ConsistentCollection collection;
   if (cmp::Status s = cmp::bridge::readConsistentCollection(input, communicator, collection); !s.ok())

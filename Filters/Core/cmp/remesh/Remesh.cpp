@@ -107,8 +107,7 @@ Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const s
 Status checkRemeshOptions(const RemeshOptions& options)
 {
   if (!isRemeshLevel(options.level))
-    return Status::error("Level must be between 0 and " + std::to_string(kMaximumRemeshLevel) + " (it is " +
-      std::to_string(options.level) + ")");
+    return Status::error(remeshLevelProblem("Level", options.level));
   if (!(options.adaptiveTolerance >= 0.0) || !std::isfinite(options.adaptiveTolerance))
   {
     std::ostringstream message;
