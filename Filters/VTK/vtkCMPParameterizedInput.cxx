@@ -199,7 +199,7 @@ void sampleArrays(vtkDataSetAttributes* output, vtkDataSetAttributes* input, con
       }
     }
     const int attribute = input->IsArrayAnAttribute(i);
-    const bool normals = attribute == vtkDataSetAttributes::NORMALS || (name && !std::strcmp(name, "Normals"));
+    const bool normals = attribute == vtkDataSetAttributes::NORMALS || (name && !std::strcmp(name, kNormalsArray));
     if (normals && isFloating(source) && components == 3)
       renormalize(vtkArrayDownCast<vtkDataArray>(array));
     const int index = output->AddArray(array);

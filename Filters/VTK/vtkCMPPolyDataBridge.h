@@ -10,6 +10,8 @@
 #include <cmp/mesh/Status.h>
 #include <cmp/mesh/TriangleMesh.h>
 
+#include "vtkCMPArrayNames.h"
+
 #include <vtkSmartPointer.h>
 
 #include <functional>
@@ -26,21 +28,7 @@ class vtkFieldData;
 namespace cmp::bridge
 {
 
-/// \brief Name of the point array that marks landmark vertices (-1 or 0..F-1).
-constexpr const char* kFeatureIdArray = "FeatureId";
-/// \brief Name of the field array mapping a file's point ids to welded ids.
-constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
-/// \brief Name of the one-value field string array naming the file a surface
-///        was read from, without its folder (set by the surface reader).
-constexpr const char* kSourceFileArray = "SourceFile";
-/// \brief Name of the cell array of per-corner texture coordinates (6 values).
-constexpr const char* kCornerTCoordsArray = "CornerTCoords";
-/// \brief Name of the cell array holding the base triangle (patch) of each triangle.
-constexpr const char* kPatchIdArray = "PatchId";
-/// \brief Name of a remesh's point array: the level at which each vertex appears.
-constexpr const char* kVertexLevelArray = "VertexLevel";
-/// \brief Name of a remesh's cell array: the quadrisection level of each triangle.
-constexpr const char* kLevelArray = "Level";
+// Array names: vtkCMPArrayNames.h.
 
 /// \brief Copies points and triangles; fails, naming the cell, if `input`
 ///        has cells that are not triangles (vertices, lines, polygons, strips).

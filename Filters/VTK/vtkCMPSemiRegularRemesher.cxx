@@ -157,16 +157,16 @@ struct SharedArrays
   /// The remesh's size, on every output.
   static void describeSize(vtkFieldData* field, const cmp::SemiRegularMesh& mesh)
   {
-    cmp::bridge::setFieldValue(field, "RemeshLevel", mesh.level);
-    cmp::bridge::setFieldValue(field, "VertexCount", mesh.vertexCount());
-    cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(mesh.triangles.size()));
+    cmp::bridge::setFieldValue(field, cmp::bridge::kRemeshLevelField, mesh.level);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kVertexCountField, mesh.vertexCount());
+    cmp::bridge::setFieldValue(field, cmp::bridge::kTriangleCountField, static_cast<double>(mesh.triangles.size()));
   }
 
   /// The relaxation's figures, on every output.
   static void describeRelaxation(vtkFieldData* field, const cmp::RemeshReport& report)
   {
-    cmp::bridge::setFieldValue(field, "SampleRelaxationRounds", report.sampleRelaxationRounds);
-    cmp::bridge::setFieldValue(field, "SampleRelaxationSeconds", report.sampleRelaxationSeconds);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSampleRelaxationRoundsField, report.sampleRelaxationRounds);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSampleRelaxationSecondsField, report.sampleRelaxationSeconds);
   }
 };
 
@@ -229,7 +229,7 @@ vtkSmartPointer<vtkPolyData> toOutput(const PreparedInput& prepared, const cmp::
   remesh->GetCellData()->AddArray(shared.levels);
   // Per model, unlike PatchId and Level: lets a user threshold the folds.
   auto folded = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  folded->SetName("Folded");
+  folded->SetName(cmp::bridge::kFoldedArray);
   folded->SetNumberOfValues(static_cast<vtkIdType>(placed.folded.size()));
   for (std::size_t t = 0; t < placed.folded.size(); ++t)
     folded->SetValue(static_cast<vtkIdType>(t), placed.folded[t]);
@@ -239,7 +239,7 @@ vtkSmartPointer<vtkPolyData> toOutput(const PreparedInput& prepared, const cmp::
   // Where folds stay after repair, the landmark to move or to add one
   // beside: one count per feature, in FeatureId order.
   auto foldsNearFeature = vtkSmartPointer<vtkIntArray>::New();
-  foldsNearFeature->SetName("FoldsNearFeature");
+  foldsNearFeature->SetName(cmp::bridge::kFoldsNearFeatureArray);
   foldsNearFeature->SetNumberOfValues(static_cast<vtkIdType>(placed.foldsNearFeature.size()));
   for (std::size_t f = 0; f < placed.foldsNearFeature.size(); ++f)
     foldsNearFeature->SetValue(static_cast<vtkIdType>(f), placed.foldsNearFeature[f]);
@@ -248,27 +248,29 @@ vtkSmartPointer<vtkPolyData> toOutput(const PreparedInput& prepared, const cmp::
   // connectivity output, which is no model's).
   cmp::bridge::copySourceFile(input.input(), remesh);
   SharedArrays::describeSize(field, mesh);
-  cmp::bridge::setFieldValue(field, "FlippedTriangles", figures.foldedAfterRepair);
-  cmp::bridge::setFieldValue(field, "FoldedBeforeRepair", figures.foldedBeforeRepair);
-  cmp::bridge::setFieldValue(field, "RepairedVertices", figures.repair.movedVertices);
-  cmp::bridge::setFieldValue(field, "MinimumAngle", figures.minimumAngleDegrees);
-  cmp::bridge::setFieldValue(field, "MeanShapeQuality", figures.meanShapeQuality);
-  cmp::bridge::setFieldValue(field, "RebuildSeconds", prepared.rebuildSeconds);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kFlippedTrianglesField, figures.foldedAfterRepair);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kFoldedBeforeRepairField, figures.foldedBeforeRepair);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kRepairedVerticesField, figures.repair.movedVertices);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kMinimumAngleField, figures.minimumAngleDegrees);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kMeanShapeQualityField, figures.meanShapeQuality);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kRebuildSecondsField, prepared.rebuildSeconds);
   SharedArrays::describeRelaxation(field, report);
-  cmp::bridge::setFieldValue(field, "PlacementSeconds", figures.placementSeconds);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kPlacementSecondsField, figures.placementSeconds);
   if (figures.distanceMeasured)
   {
-    cmp::bridge::setFieldValue(field, "HausdorffDistance", figures.hausdorffDistance);
-    cmp::bridge::setFieldValue(field, "HausdorffDistanceRelative", figures.hausdorffDistanceRelative);
-    cmp::bridge::setFieldValue(field, "MeanDistance", figures.meanDistance);
-    cmp::bridge::setFieldTuple(field, "HausdorffPoint", figures.hausdorffPoint);
-    cmp::bridge::setFieldValue(field, "HausdorffPointOnInput", figures.hausdorffPointOnInput ? 1.0 : 0.0);
-    cmp::bridge::setFieldValue(field, "HausdorffNearestFeature", figures.hausdorffNearestFeature);
-    cmp::bridge::setFieldValue(field, "HausdorffFeatureDistanceRelative", figures.hausdorffFeatureDistanceRelative);
-    cmp::bridge::setFieldValue(field, "DistanceSeconds", figures.distanceSeconds);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kHausdorffDistanceField, figures.hausdorffDistance);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kHausdorffDistanceRelativeField, figures.hausdorffDistanceRelative);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kMeanDistanceField, figures.meanDistance);
+    cmp::bridge::setFieldTuple(field, cmp::bridge::kHausdorffPointField, figures.hausdorffPoint);
+    cmp::bridge::setFieldValue(
+      field, cmp::bridge::kHausdorffPointOnInputField, figures.hausdorffPointOnInput ? 1.0 : 0.0);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kHausdorffNearestFeatureField, figures.hausdorffNearestFeature);
+    cmp::bridge::setFieldValue(
+      field, cmp::bridge::kHausdorffFeatureDistanceRelativeField, figures.hausdorffFeatureDistanceRelative);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kDistanceSecondsField, figures.distanceSeconds);
   }
   cmp::bridge::setFieldValue(
-    field, "TotalSeconds", prepared.rebuildSeconds + figures.seconds + secondsSince(start));
+    field, cmp::bridge::kTotalSecondsField, prepared.rebuildSeconds + figures.seconds + secondsSince(start));
   return remesh;
 }
 

@@ -316,12 +316,12 @@ int vtkCMPWaveletDetailTransfer::RequestData(
   if (!result->GetCellData()->HasArray(kLevelArray))
     result->GetCellData()->AddArray(intArray(kLevelArray, coarse.triangleLevels));
   vtkPointData* points = result->GetPointData();
-  points->AddArray(coefficientArray("WaveletCoefficients", blended.values));
-  points->AddArray(coefficientArray("CoarseModelCoefficients", coarseCoefficients.values));
-  points->AddArray(coefficientArray("DetailModelCoefficients", detailCoefficients.values));
+  points->AddArray(coefficientArray(cmp::bridge::kWaveletCoefficientsArray, blended.values));
+  points->AddArray(coefficientArray(cmp::bridge::kCoarseModelCoefficientsArray, coarseCoefficients.values));
+  points->AddArray(coefficientArray(cmp::bridge::kDetailModelCoefficientsArray, detailCoefficients.values));
   Eigen::MatrixXd magnitude = blended.values.rowwise().norm();
   magnitude.topRows(transform.vertexCount(0)).setZero(); // positions there, not details
-  points->AddArray(coefficientArray("DetailMagnitude", magnitude));
+  points->AddArray(coefficientArray(cmp::bridge::kDetailMagnitudeArray, magnitude));
 
   if (cmp::Status s = levelMeshes(transform, blended, result, levelsOutput); !s.ok())
   {
@@ -329,11 +329,11 @@ int vtkCMPWaveletDetailTransfer::RequestData(
     return 0;
   }
   auto weights = vtkSmartPointer<vtkDoubleArray>::New();
-  weights->SetName("DetailWeights");
+  weights->SetName(cmp::bridge::kDetailWeightsArray);
   for (double w : schedule)
     weights->InsertNextValue(w);
   result->GetFieldData()->AddArray(weights);
-  cmp::bridge::setFieldValue(result->GetFieldData(), "TransferSeconds",
+  cmp::bridge::setFieldValue(result->GetFieldData(), cmp::bridge::kTransferSecondsField,
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   output->ShallowCopy(result);
   this->UpdateProgress(1.0);
