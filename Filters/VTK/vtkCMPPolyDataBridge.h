@@ -64,6 +64,19 @@ vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain&
 /// \brief A vtkIntArray named `name` holding `values`.
 vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values);
 
+/// \brief A one-component array of type `ArrayType` (vtkUnsignedCharArray,
+///        vtkIdTypeArray, ...) named `name` holding `values`, converted.
+template <class ArrayType, class Value>
+vtkSmartPointer<ArrayType> valueArray(const char* name, const std::vector<Value>& values)
+{
+  auto array = vtkSmartPointer<ArrayType>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  return array;
+}
+
 /// \brief Adds (or replaces) the point array `FeatureId` of `surface`
 ///        (int: -1, or the feature index at each landmark vertex).
 void setFeatureIds(vtkPolyData* surface, const LandmarkList& landmarks);

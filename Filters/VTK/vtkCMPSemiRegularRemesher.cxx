@@ -228,22 +228,13 @@ vtkSmartPointer<vtkPolyData> toOutput(const PreparedInput& prepared, const cmp::
   remesh->GetCellData()->AddArray(shared.patchIds);
   remesh->GetCellData()->AddArray(shared.levels);
   // Per model, unlike PatchId and Level: lets a user threshold the folds.
-  auto folded = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  folded->SetName(cmp::bridge::kFoldedArray);
-  folded->SetNumberOfValues(static_cast<vtkIdType>(placed.folded.size()));
-  for (std::size_t t = 0; t < placed.folded.size(); ++t)
-    folded->SetValue(static_cast<vtkIdType>(t), placed.folded[t]);
-  remesh->GetCellData()->AddArray(folded);
+  remesh->GetCellData()->AddArray(
+    cmp::bridge::valueArray<vtkUnsignedCharArray>(cmp::bridge::kFoldedArray, placed.folded));
 
   vtkFieldData* field = remesh->GetFieldData();
   // Where folds stay after repair, the landmark to move or to add one
   // beside: one count per feature, in FeatureId order.
-  auto foldsNearFeature = vtkSmartPointer<vtkIntArray>::New();
-  foldsNearFeature->SetName(cmp::bridge::kFoldsNearFeatureArray);
-  foldsNearFeature->SetNumberOfValues(static_cast<vtkIdType>(placed.foldsNearFeature.size()));
-  for (std::size_t f = 0; f < placed.foldsNearFeature.size(); ++f)
-    foldsNearFeature->SetValue(static_cast<vtkIdType>(f), placed.foldsNearFeature[f]);
-  field->AddArray(foldsNearFeature);
+  field->AddArray(intArray(cmp::bridge::kFoldsNearFeatureArray, placed.foldsNearFeature));
   // The remesh is still that model: keep its name (never on the shared
   // connectivity output, which is no model's).
   cmp::bridge::copySourceFile(input.input(), remesh);

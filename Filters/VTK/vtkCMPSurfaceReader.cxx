@@ -342,14 +342,8 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   if (!data.pointProperties.empty() || !data.triangleProperties.empty())
     addPLYAttributes(data, surface);
   if (welded > 0)
-  {
-    auto map = vtkSmartPointer<vtkIdTypeArray>::New();
-    map->SetName(cmp::bridge::kFileToMeshPointArray);
-    map->SetNumberOfValues(static_cast<vtkIdType>(data.fileToMeshPoint.size()));
-    for (std::size_t i = 0; i < data.fileToMeshPoint.size(); ++i)
-      map->SetValue(static_cast<vtkIdType>(i), data.fileToMeshPoint[i]);
-    surface->GetFieldData()->AddArray(map);
-  }
+    surface->GetFieldData()->AddArray(
+      cmp::bridge::valueArray<vtkIdTypeArray>(cmp::bridge::kFileToMeshPointArray, data.fileToMeshPoint));
   cmp::bridge::setFieldValue(surface->GetFieldData(), cmp::bridge::kWeldedPointCountField, welded);
   // Names the model in the messages of the filters downstream (which see one
   // block of a collection at a time, without its name); the folder is left
