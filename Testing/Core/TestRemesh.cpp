@@ -162,8 +162,11 @@ TEST_F(RemeshOfSpheres, RefusesOptionsOutOfRangeAndMissingModels)
                              const std::string& expected)
   {
     CollectionRemesh out;
-    const Status status = remesh(domain_, given, out, options);
+    RemeshReport report;
+    report.failedModel = 7;
+    const Status status = remesh(domain_, given, out, options, &report);
     EXPECT_FALSE(status.ok()) << expected;
+    EXPECT_EQ(report.failedModel, -1) << "no model was placed";
     EXPECT_NE(status.message().find(expected), std::string::npos) << status.message();
   };
   RemeshOptions options;

@@ -124,6 +124,8 @@ Status checkRemeshOptions(const RemeshOptions& options)
 Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localModels, Communicator& communicator,
   CollectionRemesh& out, const RemeshOptions& options, RemeshReport* report)
 {
+  if (report)
+    *report = RemeshReport{};
   RemeshReport local;
   local.models.resize(localModels.size());
   CollectionRemesh result;
