@@ -12,6 +12,8 @@ from .stages import BLEND_ALIGNMENTS
 
 
 DEFAULT_LEVEL = 4
+# The remesh levels, 0 to cmp::kMaximumRemeshLevel (SemiRegularRemesher.h), as the
+# filters and the plugin take them: a level outside is a usage error, never clamped.
 MAX_LEVEL = 8
 MAX_SAMPLE_RELAXATION = 32  # the plugin's range; more rounds gain nothing measurable
 # The command remeshes the whole collection in one run, so the relaxed

@@ -4,6 +4,8 @@ outputs of its stages: field-data values, table columns, landmarks."""
 import numpy
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+from . import array_names
+
 
 def field_reader(data):
     """A function giving the first value of a field array of `data`."""
@@ -19,7 +21,7 @@ def folds_near_landmark(remesh):
     """The remesher's FoldsNearFeature as {"landmark": folds}, landmarks with
     folds only, most folds first: where folds stay after repair ({} for a
     remesh without the array)."""
-    counts = remesh.GetFieldData().GetArray("FoldsNearFeature")
+    counts = remesh.GetFieldData().GetArray(array_names.FOLDS_NEAR_FEATURE_ARRAY)
     if counts is None:
         return {}
     pairs = [(feature, int(counts.GetValue(feature))) for feature in range(counts.GetNumberOfTuples())]
@@ -35,7 +37,7 @@ def table_column(table, name):
 def landmark_points(surface):
     """The point ids of landmarks 0, 1, ... of `surface` (Check Inputs has
     made sure each feature is on one vertex)."""
-    features = vtk_to_numpy(surface.GetPointData().GetArray("FeatureId"))
+    features = vtk_to_numpy(surface.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY))
     points = numpy.flatnonzero(features >= 0)
     return points[numpy.argsort(features[points])]
 
@@ -51,7 +53,8 @@ def describe_base_domain(domain, source):
         "triangles": domain.GetNumberOfCells(),
         "edges": 3 * domain.GetNumberOfCells() // 2,
     }
-    for name, key in (("MinimumAngle", "min_angle_degrees"), ("MeanShapeQuality", "mean_shape_quality")):
+    for name, key in ((array_names.MINIMUM_ANGLE_FIELD, "min_angle_degrees"),
+                      (array_names.MEAN_SHAPE_QUALITY_FIELD, "mean_shape_quality")):
         array = domain.GetFieldData().GetArray(name)
         if array is not None:
             report[key] = round(array.GetValue(0), 4)

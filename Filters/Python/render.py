@@ -37,6 +37,7 @@ from vtkmodules.vtkRenderingCore import (
 import vtkmodules.vtkRenderingFreeType  # noqa: F401 (the text actors' font backend)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the render window's implementation)
 
+from . import array_names
 from .figures import field_reader, landmark_points
 from .summary import weights_text
 from .vtkio import StageError, read_polydata
@@ -45,8 +46,9 @@ BACKGROUND = (1.0, 1.0, 1.0)
 CLAY = (0.86, 0.80, 0.71)
 TEXT = (0.1, 0.1, 0.1)
 # The surface correspondence arrays every remesh carries: nothing to look at.
-CORRESPONDENCE_ARRAYS = {"FeatureId", "BaseTriangle", "BaseCoordinates", "UnsplitPointId", "Normals", "TCoords",
-                         "VertexLevel"}
+CORRESPONDENCE_ARRAYS = {array_names.FEATURE_ID_ARRAY, array_names.BASE_TRIANGLE_ARRAY,
+                         array_names.BASE_COORDINATES_ARRAY, array_names.UNSPLIT_POINT_ID_ARRAY,
+                         array_names.NORMALS_ARRAY, array_names.T_COORDS_ARRAY, array_names.VERTEX_LEVEL_ARRAY}
 CURVE_COLOUR = (0.12, 0.12, 0.14)
 TEXTURE_SIZE = 1024
 TITLE_HEIGHT = 36  # pixels above the panels when a sheet has a title
@@ -149,7 +151,7 @@ class Panel:
         self.curves = None  # polylines drawn over the surface
 
 
-def patch_panel(surface, label, patches="PatchId", curves=None):
+def patch_panel(surface, label, patches=array_names.PATCH_ID_ARRAY, curves=None):
     """A panel of `surface` with each patch (cell array `patches`) in its
     own colour, optionally with `curves` drawn over it."""
     panel = Panel(surface, label)
@@ -505,15 +507,15 @@ def picture_modes(mean, deviations, ratios, view, path):
     sheet = Sheet(3, len(deviations), (400, 280),
                   "Modes at -2, 0, +2 standard deviations (colour: displacement along the mode)")
     for row, (deviation, ratio) in enumerate(zip(deviations, ratios)):
-        mode = "Mode%d" % row
+        mode = "%s%d" % (array_names.MODE_ARRAY_PREFIX, row)
         for column, factor in enumerate((-2.0, 0.0, 2.0)):
             shape = displaced(mean, mode, factor)
-            largest = _magnitude(shape, mode, "Displacement")
+            largest = _magnitude(shape, mode, array_names.DISPLACEMENT_ARRAY)
             if column == 1:
                 label = "%s: sd %.3g, %.1f %% of the variance" % (mode, deviation, 100 * ratio)
             else:
                 label = "%s %+g sd" % (mode, factor)
-            sheet.add(column, row, Panel(shape, label, "Displacement", (0.0, max(largest, 1e-30))))
+            sheet.add(column, row, Panel(shape, label, array_names.DISPLACEMENT_ARRAY, (0.0, max(largest, 1e-30))))
     sheet.write(path, view)
 
 
@@ -626,7 +628,7 @@ def make_overview_pictures(pictures, ready, remeshes):
     pictures.make("inputs.png", picture_patches, inputs,
                   "The models and their patch layouts (a patch has one colour on every model)", view)
     if remesh:
-        level = int(field_reader(remesh[first.name])("RemeshLevel"))
+        level = int(field_reader(remesh[first.name])(array_names.REMESH_LEVEL_FIELD))
         remeshed = [(places[m.name](remesh[m.name]), None, m.name) for m in ready]
         pictures.make("remeshes.png", picture_patches, remeshed,
                       "Remeshes of level %d: one connectivity, coloured by base triangle" % level, view)

@@ -14,6 +14,7 @@ from vtkmodules.vtkFiltersTexture import vtkTextureMapToCylinder
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 from . import CMPFilters as cmp
+from . import array_names
 from .figures import field_reader, folds_near_landmark, landmark_count, significant, table_column
 from .summary import weights_text
 from .vtkio import StageError, run, write_multiblock, write_polydata, write_table
@@ -89,9 +90,9 @@ def load_base_domain(path):
     domain = run(reader)
     if domain.GetNumberOfPoints() == 0:
         raise StageError("cannot read a base domain from '%s'" % path)
-    if domain.GetPointData().GetArray("FeatureId") is None:
+    if domain.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY) is None:
         ids = vtkIntArray()
-        ids.SetName("FeatureId")
+        ids.SetName(array_names.FEATURE_ID_ARRAY)
         for i in range(domain.GetNumberOfPoints()):
             ids.InsertNextValue(i)
         domain.GetPointData().AddArray(ids)
@@ -130,12 +131,12 @@ def trace_net(model, domain, output_folder):
     surface, value = _run_net_filter(model, "trace", cmp.vtkCMPFeatureNetTracer(), model.surface, domain,
                                      output_folder, ".net.vtp", ".curves.vtp")
     model.report["net"] = {
-        "length": round(value("NetLength"), 6),
-        "length_per_sqrt_area": round(value("NetLengthPerSqrtArea"), 4),
-        "valid": bool(value("NetValid")),
-        "retraced_curves": int(value("RetracedCurves")),
-        "penalised_curves": int(value("PenalisedCurves")),
-        "split_edges": int(value("SplitEdges")),
+        "length": round(value(array_names.NET_LENGTH_FIELD), 6),
+        "length_per_sqrt_area": round(value(array_names.NET_LENGTH_PER_SQRT_AREA_FIELD), 4),
+        "valid": bool(value(array_names.NET_VALID_FIELD)),
+        "retraced_curves": int(value(array_names.RETRACED_CURVES_FIELD)),
+        "penalised_curves": int(value(array_names.PENALISED_CURVES_FIELD)),
+        "split_edges": int(value(array_names.SPLIT_EDGES_FIELD)),
         "vertices": surface.GetNumberOfPoints(),
     }
     if not model.report["net"]["valid"]:
@@ -156,36 +157,36 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False, fr
     surface, value = _run_net_filter(model, "straighten", straightener, traced, domain,
                                      output_folder, ".param.vtp", ".straight-curves.vtp")
     model.report["straighten"] = {
-        "net_length_before": round(value("NetLengthBefore"), 6),
-        "net_length_after": round(value("NetLengthAfter"), 6),
-        "net_length_per_sqrt_area_after": round(value("NetLengthPerSqrtAreaAfter"), 4),
-        "area_variation_before": round(value("AreaVariationBefore"), 6),
-        "area_variation_after": round(value("AreaVariationAfter"), 6),
-        "sweeps": int(value("Sweeps")),
-        "skipped_stars": int(value("SkippedStars")),
+        "net_length_before": round(value(array_names.NET_LENGTH_BEFORE_FIELD), 6),
+        "net_length_after": round(value(array_names.NET_LENGTH_AFTER_FIELD), 6),
+        "net_length_per_sqrt_area_after": round(value(array_names.NET_LENGTH_PER_SQRT_AREA_AFTER_FIELD), 4),
+        "area_variation_before": round(value(array_names.AREA_VARIATION_BEFORE_FIELD), 6),
+        "area_variation_after": round(value(array_names.AREA_VARIATION_AFTER_FIELD), 6),
+        "sweeps": int(value(array_names.SWEEPS_FIELD)),
+        "skipped_stars": int(value(array_names.SKIPPED_STARS_FIELD)),
         # Not a failure: the parameterization is still written, and the
         # count says where it is not bijective.
-        "flipped_triangles": int(value("FlippedTriangles")),
-        "smallest_area_ratio": significant(value("SmallestAreaRatio"), 4),
+        "flipped_triangles": int(value(array_names.FLIPPED_TRIANGLES_FIELD)),
+        "smallest_area_ratio": significant(value(array_names.SMALLEST_AREA_RATIO_FIELD), 4),
         # Above about 250 degrees the curves leave that landmark bunched and
         # the remesh often keeps folds there.
-        "widest_curve_gap_degrees": round(value("WidestCurveGap"), 1),
-        "widest_curve_gap_landmark": int(value("WidestCurveGapFeature")),
-        "net_valid": bool(value("NetValid")),
+        "widest_curve_gap_degrees": round(value(array_names.WIDEST_CURVE_GAP_FIELD), 1),
+        "widest_curve_gap_landmark": int(value(array_names.WIDEST_CURVE_GAP_FEATURE_FIELD)),
+        "net_valid": bool(value(array_names.NET_VALID_FIELD)),
         "vertices": surface.GetNumberOfPoints(),
         "lower_stretch": bool(lower_stretch),
         "free_curves": bool(free_curves),
     }
     if free_curves:
         model.report["straighten"]["map"] = {
-            "applied": bool(value("FreeCurvesApplied")),
-            "distortion_before": significant(value("MapDistortionBefore"), 4),
-            "distortion_after": significant(value("MapDistortionAfter"), 4),
-            "sweeps": int(value("MapSweeps")),
-            "crossing_vertices": int(value("MapCrossingVertices")),
+            "applied": bool(value(array_names.FREE_CURVES_APPLIED_FIELD)),
+            "distortion_before": significant(value(array_names.MAP_DISTORTION_BEFORE_FIELD), 4),
+            "distortion_after": significant(value(array_names.MAP_DISTORTION_AFTER_FIELD), 4),
+            "sweeps": int(value(array_names.MAP_SWEEPS_FIELD)),
+            "crossing_vertices": int(value(array_names.MAP_CROSSING_VERTICES_FIELD)),
         }
         if not model.report["straighten"]["map"]["applied"]:
-            reason = surface.GetFieldData().GetAbstractArray("FreeCurvesReason")
+            reason = surface.GetFieldData().GetAbstractArray(array_names.FREE_CURVES_REASON_FIELD)
             model.report["straighten"]["map"]["reason"] = reason.GetValue(0) if reason is not None else ""
     if not model.report["straighten"]["net_valid"]:
         raise StageError("the straightened net failed the layout check")
@@ -227,26 +228,28 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
             raise StageError("the remesher's block %d is not model %s" % (index, model.name))
         value = field_reader(remesh)
         figures.append({
-            "level": int(value("RemeshLevel")),
-            "vertices": int(value("VertexCount")),
-            "triangles": int(value("TriangleCount")),
-            "hausdorff_distance": significant(value("HausdorffDistance")),
-            "hausdorff_per_diagonal": significant(value("HausdorffDistanceRelative")),
-            "mean_distance": significant(value("MeanDistance")),
+            "level": int(value(array_names.REMESH_LEVEL_FIELD)),
+            "vertices": int(value(array_names.VERTEX_COUNT_FIELD)),
+            "triangles": int(value(array_names.TRIANGLE_COUNT_FIELD)),
+            "hausdorff_distance": significant(value(array_names.HAUSDORFF_DISTANCE_FIELD)),
+            "hausdorff_per_diagonal": significant(value(array_names.HAUSDORFF_DISTANCE_RELATIVE_FIELD)),
+            "mean_distance": significant(value(array_names.MEAN_DISTANCE_FIELD)),
             # Where the Hausdorff distance is reached: on the input, a part
             # the remesh misses (a tail without a landmark at its tip).
-            "hausdorff_point": [significant(x) for x in remesh.GetFieldData().GetArray("HausdorffPoint").GetTuple3(0)],
-            "hausdorff_point_on": "input" if value("HausdorffPointOnInput") == 1 else "remesh",
-            "hausdorff_nearest_landmark": int(value("HausdorffNearestFeature")),
-            "hausdorff_landmark_distance_per_diagonal": significant(value("HausdorffFeatureDistanceRelative")),
+            "hausdorff_point": [significant(x) for x in
+                                remesh.GetFieldData().GetArray(array_names.HAUSDORFF_POINT_FIELD).GetTuple3(0)],
+            "hausdorff_point_on": "input" if value(array_names.HAUSDORFF_POINT_ON_INPUT_FIELD) == 1 else "remesh",
+            "hausdorff_nearest_landmark": int(value(array_names.HAUSDORFF_NEAREST_FEATURE_FIELD)),
+            "hausdorff_landmark_distance_per_diagonal":
+                significant(value(array_names.HAUSDORFF_FEATURE_DISTANCE_RELATIVE_FIELD)),
             # Reported, not a failure, as for the straightener.
-            "flipped_triangles": int(value("FlippedTriangles")),
+            "flipped_triangles": int(value(array_names.FLIPPED_TRIANGLES_FIELD)),
             "folds_near_landmark": folds_near_landmark(remesh),
-            "folded_before_repair": int(value("FoldedBeforeRepair")),
-            "repaired_vertices": int(value("RepairedVertices")),
-            "min_angle_degrees": round(value("MinimumAngle"), 4),
-            "mean_shape_quality": round(value("MeanShapeQuality"), 4),
-            "seconds": round(value("TotalSeconds"), 4),
+            "folded_before_repair": int(value(array_names.FOLDED_BEFORE_REPAIR_FIELD)),
+            "repaired_vertices": int(value(array_names.REPAIRED_VERTICES_FIELD)),
+            "min_angle_degrees": round(value(array_names.MINIMUM_ANGLE_FIELD), 4),
+            "mean_shape_quality": round(value(array_names.MEAN_SHAPE_QUALITY_FIELD), 4),
+            "seconds": round(value(array_names.TOTAL_SECONDS_FIELD), 4),
         })
         write_polydata(remesh, os.path.join(output_folder, model.name + ".remesh.vtp"))
     write_multiblock(remeshes, os.path.join(output_folder, "collection.vtm"))
@@ -260,8 +263,8 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
     return remeshes, {
         "vertices": connectivity.GetNumberOfPoints(),
         "triangles": connectivity.GetNumberOfCells(),
-        "sample_relaxation_rounds": int(shared("SampleRelaxationRounds")),
-        "sample_relaxation_seconds": round(shared("SampleRelaxationSeconds"), 4),
+        "sample_relaxation_rounds": int(shared(array_names.SAMPLE_RELAXATION_ROUNDS_FIELD)),
+        "sample_relaxation_seconds": round(shared(array_names.SAMPLE_RELAXATION_SECONDS_FIELD), 4),
         "fold_repair": bool(repair_folds),
         "seconds": round(seconds, 4),
     }
@@ -292,8 +295,8 @@ def transfer_attributes(source, remeshes, domain, output_folder):
         value = field_reader(result)
         write_polydata(result, os.path.join(output_folder, "%s.from-%s.vtp" % (name, source.name)))
         figures["targets"][name] = {
-            "arrays": int(value("TransferredArrays")),
-            "seam_points_added": int(value("SeamPointsAdded")),
+            "arrays": int(value(array_names.TRANSFERRED_ARRAYS_FIELD)),
+            "seam_points_added": int(value(array_names.SEAM_POINTS_ADDED_FIELD)),
             "textured": result.GetPointData().GetTCoords() is not None,
         }
     figures["seconds"] = round(time.perf_counter() - start, 4)
@@ -307,7 +310,8 @@ def with_texture_coordinates(surface):
     texture (the CGAL quadrupeds have none) still shows where its surface
     lands on the others, as a checkerboard in the pictures."""
     # The reader keeps texture coordinates with seams per triangle corner.
-    if surface.GetPointData().GetTCoords() is not None or surface.GetCellData().GetArray("CornerTCoords"):
+    corners = surface.GetCellData().GetArray(array_names.CORNER_T_COORDS_ARRAY)
+    if surface.GetPointData().GetTCoords() is not None or corners:
         return surface, False
     cylinder = vtkTextureMapToCylinder()
     cylinder.SetInputData(surface)
@@ -351,7 +355,7 @@ def transfer_details(source_name, remeshes, output_folder):
         path = os.path.join(output_folder, "%s.details-from-%s.vtp" % (name, source_name))
         write_polydata(result, path)
         figures["targets"][name] = {"file": os.path.basename(path),
-                                    "seconds": round(field_reader(result)("TransferSeconds"), 4)}
+                                    "seconds": round(field_reader(result)(array_names.TRANSFER_SECONDS_FIELD), 4)}
     figures["seconds"] = round(time.perf_counter() - start, 4)
     return figures
 
@@ -387,17 +391,17 @@ def principal_components(remeshes, modes, output_folder):
     write_table(variances, os.path.join(output_folder, "pca-variances.csv"))
     write_multiblock(pca.GetOutputDataObject(4), os.path.join(output_folder, "pca-aligned.vtm"))
     value = field_reader(mean)
-    ratios = table_column(variances, "ExplainedVarianceRatio")
+    ratios = table_column(variances, array_names.EXPLAINED_VARIANCE_RATIO_ARRAY)
     figures = {
         "requested_modes": modes,
-        "modes": int(value("ModeCount")),
-        "models": table_column(coefficients, "Model"),
+        "modes": int(value(array_names.MODE_COUNT_FIELD)),
+        "models": table_column(coefficients, array_names.MODEL_COLUMN),
         "alignment": PCA_ALIGNMENT,
-        "alignment_iterations": int(value("AlignmentIterations")),
-        "alignment_converged": bool(value("AlignmentConverged")),
-        "total_variance": significant(value("TotalVariance")),
-        "variances": [significant(v) for v in table_column(variances, "Variance")],
-        "standard_deviations": [significant(v) for v in table_column(variances, "StandardDeviation")],
+        "alignment_iterations": int(value(array_names.ALIGNMENT_ITERATIONS_FIELD)),
+        "alignment_converged": bool(value(array_names.ALIGNMENT_CONVERGED_FIELD)),
+        "total_variance": significant(value(array_names.TOTAL_VARIANCE_FIELD)),
+        "variances": [significant(v) for v in table_column(variances, array_names.VARIANCE_ARRAY)],
+        "standard_deviations": [significant(v) for v in table_column(variances, array_names.STANDARD_DEVIATION_COLUMN)],
         "explained_variance_ratios": [round(r, 6) for r in ratios],
         "explained_variance": round(sum(ratios), 6),
         "files": ["mean.vtp", "pca-coefficients.csv", "pca-variances.csv", "pca-aligned.vtm"],
@@ -439,7 +443,7 @@ def _blend(blocks, weights, alignment):
     blend.SetWeights([float(w) for w in weights])
     surface = vtkPolyData()
     surface.ShallowCopy(run(blend))
-    return surface, bool(field_reader(surface)("Extrapolating"))
+    return surface, bool(field_reader(surface)(array_names.EXTRAPOLATING_FIELD))
 
 
 def blend_grid_layout(count):

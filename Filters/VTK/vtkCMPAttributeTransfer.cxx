@@ -62,8 +62,9 @@ int vtkCMPAttributeTransfer::RequestDataObject(
 namespace
 {
 
-constexpr const char* kTCoordsArray = "TCoords";
-constexpr const char* kUnsplitPointIdArray = "UnsplitPointId";
+using cmp::bridge::kTCoordsArray;
+using cmp::bridge::kUnsplitPointIdArray;
+
 /// Corners of one point whose texture coordinates differ by less (in u + v)
 /// read the same texture: float storage and the corners' inset towards
 /// their triangles leave differences near 1e-6, a seam jumps by a texel or more.
@@ -214,7 +215,7 @@ namespace
 std::vector<std::string> arraysKeptFromTarget(vtkPointData* source)
 {
   std::vector<std::string> kept{ cmp::bridge::kFeatureIdArray, cmp::bridge::kBaseTriangleArray,
-    cmp::bridge::kBaseCoordinatesArray, "Normals", kUnsplitPointIdArray };
+    cmp::bridge::kBaseCoordinatesArray, cmp::bridge::kNormalsArray, kUnsplitPointIdArray };
   if (vtkDataArray* normals = source->GetNormals(); normals && normals->GetName())
     kept.emplace_back(normals->GetName());
   return kept;
@@ -263,10 +264,10 @@ cmp::Status transferTo(vtkPolyData* target, const cmp::BaseDomain& domain, const
     ++transferred;
   }
   vtkFieldData* field = result->GetFieldData();
-  cmp::bridge::setFieldValue(field, "TransferredArrays", transferred);
-  cmp::bridge::setFieldValue(field, "SeamPointsAdded", static_cast<double>(seamPoints));
-  cmp::bridge::setFieldValue(
-    field, "TransferSeconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  cmp::bridge::setFieldValue(field, cmp::bridge::kTransferredArraysField, transferred);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kSeamPointsAddedField, static_cast<double>(seamPoints));
+  cmp::bridge::setFieldValue(field, cmp::bridge::kTransferSecondsField,
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return {};
 }
 

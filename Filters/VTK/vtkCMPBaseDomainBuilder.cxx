@@ -36,9 +36,9 @@ int vtkCMPBaseDomainBuilder::RequestData(
   }
   output->ShallowCopy(cmp::bridge::toPolyData(domain));
   vtkFieldData* field = output->GetFieldData();
-  cmp::bridge::setFieldValue(field, "MinimumAngle", report.minAngleDegrees);
-  cmp::bridge::setFieldValue(field, "MeanShapeQuality", report.meanShapeQuality);
-  cmp::bridge::setFieldValue(field, "FoldingCollapses", report.foldingCollapses);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kMinimumAngleField, report.minAngleDegrees);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kMeanShapeQualityField, report.meanShapeQuality);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kFoldingCollapsesField, report.foldingCollapses);
   return 1;
 }
 

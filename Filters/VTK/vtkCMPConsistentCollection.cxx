@@ -172,7 +172,7 @@ void copyCorrespondenceArrays(vtkPolyData* model, vtkPolyData* shape)
 {
   if (!model)
     return;
-  for (const char* name : { kFeatureIdArray, "BaseTriangle", "BaseCoordinates", kVertexLevelArray })
+  for (const char* name : { kFeatureIdArray, kBaseTriangleArray, kBaseCoordinatesArray, kVertexLevelArray })
     if (vtkAbstractArray* array = model->GetPointData()->GetAbstractArray(name))
       shape->GetPointData()->AddArray(array);
   shape->GetCellData()->ShallowCopy(model->GetCellData());

@@ -114,7 +114,7 @@ vtkSmartPointer<vtkPolyData> refinedSurface(
     cmp::bridge::interpolateCornerTCoords(corners, inputCorners, inputMesh, mesh.triangleCount(),
       [&](int t) { return mesh.inputTriangle(t); }, [&](int t, int c) { return onInput[mesh.triangle(t)[c]]; });
   }
-  auto patchIds = intArray("PatchId", mesh.triangleCount());
+  auto patchIds = intArray(cmp::bridge::kPatchIdArray, mesh.triangleCount());
   for (int t = 0; t < mesh.triangleCount(); ++t)
     patchIds->SetValue(t, net.patchOfTriangle[t]);
   cells->AddArray(patchIds);
@@ -124,10 +124,8 @@ vtkSmartPointer<vtkPolyData> refinedSurface(
 /// Runs the independent layout check on the traced net.
 bool layoutIsValid(const cmp::TracedNet& net, const cmp::BaseDomain& domain, std::string& problem)
 {
-  const std::vector<std::string> problems =
-    cmp::validateLayout(cmp::toLabelledSurface(net, domain), cmp::toBaseTriangles(domain));
-  problem = problems.empty() ? "" : problems.front();
-  return problems.empty();
+  problem = cmp::layoutProblem(cmp::toLabelledSurface(net, domain), domain);
+  return problem.empty();
 }
 
 } // namespace
@@ -178,12 +176,12 @@ int vtkCMPFeatureNetTracer::RequestData(
   for (vtkPolyData* output : { surfaceOutput, curvesOutput })
   {
     vtkFieldData* field = output->GetFieldData();
-    cmp::bridge::setFieldValue(field, "NetLength", report.netLength);
-    cmp::bridge::setFieldValue(field, "NetLengthPerSqrtArea", lengthPerSqrtArea);
-    cmp::bridge::setFieldValue(field, "NetValid", valid ? 1 : 0);
-    cmp::bridge::setFieldValue(field, "RetracedCurves", report.retraced);
-    cmp::bridge::setFieldValue(field, "PenalisedCurves", report.penalised);
-    cmp::bridge::setFieldValue(field, "SplitEdges", report.splitEdges);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthField, report.netLength);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthPerSqrtAreaField, lengthPerSqrtArea);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kNetValidField, valid ? 1 : 0);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kRetracedCurvesField, report.retraced);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kPenalisedCurvesField, report.penalised);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSplitEdgesField, report.splitEdges);
     // The outputs are built anew: keep the model's name for the next filters.
     cmp::bridge::copySourceFile(input, output);
   }

@@ -63,7 +63,7 @@ int vtkCMPInputCheck::RequestData(vtkInformation*, vtkInformationVector** inputV
     return 0;
   }
   output->ShallowCopy(surface);
-  cmp::bridge::setFieldString(output->GetFieldData(), "InputCheck", "ok");
+  cmp::bridge::setFieldString(output->GetFieldData(), cmp::bridge::kInputCheckField, "ok");
   return 1;
 }
 

@@ -97,7 +97,7 @@ vtkSmartPointer<vtkPolyData> meanOutput(const cmp::MeshPCA& pca, const cmp::brid
     const std::vector<cmp::Vec3> displacement = pca.modeDisplacements(k);
     const double deviation = std::sqrt(pca.variances[k]);
     auto mode = vtkSmartPointer<vtkDoubleArray>::New();
-    mode->SetName(("Mode" + std::to_string(k)).c_str());
+    mode->SetName((cmp::bridge::kModeArrayPrefix + std::to_string(k)).c_str());
     mode->SetNumberOfComponents(3);
     mode->SetNumberOfTuples(static_cast<vtkIdType>(displacement.size()));
     for (std::size_t v = 0; v < displacement.size(); ++v)
@@ -114,9 +114,9 @@ vtkSmartPointer<vtkTable> coefficientTable(const cmp::MeshPCA& pca, const std::v
 {
   auto table = vtkSmartPointer<vtkTable>::New();
   auto model = vtkSmartPointer<vtkStringArray>::New();
-  model->SetName("Model");
+  model->SetName(cmp::bridge::kModelColumn);
   auto index = vtkSmartPointer<vtkIntArray>::New();
-  index->SetName("Index");
+  index->SetName(cmp::bridge::kIndexColumn);
   for (int i = 0; i < pca.modelCount(); ++i)
   {
     model->InsertNextValue(i < static_cast<int>(names.size()) ? names[i] : "");
@@ -125,7 +125,7 @@ vtkSmartPointer<vtkTable> coefficientTable(const cmp::MeshPCA& pca, const std::v
   table->AddColumn(model);
   table->AddColumn(index);
   for (int k = 0; k < pca.modeCount(); ++k)
-    table->AddColumn(doubleArray("Coefficient" + std::to_string(k), pca.coefficients.col(k)));
+    table->AddColumn(doubleArray(cmp::bridge::kCoefficientColumnPrefix + std::to_string(k), pca.coefficients.col(k)));
   return table;
 }
 
@@ -133,7 +133,7 @@ vtkSmartPointer<vtkTable> varianceTable(const cmp::MeshPCA& pca)
 {
   auto table = vtkSmartPointer<vtkTable>::New();
   auto mode = vtkSmartPointer<vtkIntArray>::New();
-  mode->SetName("Mode");
+  mode->SetName(cmp::bridge::kModeColumn);
   Eigen::VectorXd cumulative(pca.modeCount());
   double sum = 0.0;
   for (int k = 0; k < pca.modeCount(); ++k)
@@ -142,10 +142,10 @@ vtkSmartPointer<vtkTable> varianceTable(const cmp::MeshPCA& pca)
     cumulative[k] = (sum += pca.explainedVarianceRatios[k]);
   }
   table->AddColumn(mode);
-  table->AddColumn(doubleArray("Variance", pca.variances));
-  table->AddColumn(doubleArray("StandardDeviation", pca.variances.cwiseSqrt()));
-  table->AddColumn(doubleArray("ExplainedVarianceRatio", pca.explainedVarianceRatios));
-  table->AddColumn(doubleArray("CumulativeRatio", cumulative));
+  table->AddColumn(doubleArray(cmp::bridge::kVarianceArray, pca.variances));
+  table->AddColumn(doubleArray(cmp::bridge::kStandardDeviationColumn, pca.variances.cwiseSqrt()));
+  table->AddColumn(doubleArray(cmp::bridge::kExplainedVarianceRatioArray, pca.explainedVarianceRatios));
+  table->AddColumn(doubleArray(cmp::bridge::kCumulativeRatioColumn, cumulative));
   return table;
 }
 
@@ -246,15 +246,16 @@ int vtkCMPMeshPCA::RequestData(vtkInformation*, vtkInformationVector** inputVect
     return 1;
   vtkSmartPointer<vtkPolyData> mean = meanOutput(pca, collection);
   vtkFieldData* field = mean->GetFieldData();
-  cmp::bridge::setFieldValue(field, "ModelCount", pca.modelCount());
-  cmp::bridge::setFieldValue(field, "ModeCount", pca.modeCount());
-  field->AddArray(doubleArray("Variance", pca.variances));
-  field->AddArray(doubleArray("ExplainedVarianceRatio", pca.explainedVarianceRatios));
-  cmp::bridge::setFieldValue(field, "TotalVariance", pca.totalVariance);
-  cmp::bridge::setFieldValue(field, "AlignmentIterations", alignment.iterations);
-  cmp::bridge::setFieldValue(field, "AlignmentConverged", this->Alignment == NO_ALIGNMENT || alignment.converged);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kModelCountField, pca.modelCount());
+  cmp::bridge::setFieldValue(field, cmp::bridge::kModeCountField, pca.modeCount());
+  field->AddArray(doubleArray(cmp::bridge::kVarianceArray, pca.variances));
+  field->AddArray(doubleArray(cmp::bridge::kExplainedVarianceRatioArray, pca.explainedVarianceRatios));
+  cmp::bridge::setFieldValue(field, cmp::bridge::kTotalVarianceField, pca.totalVariance);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kAlignmentIterationsField, alignment.iterations);
   cmp::bridge::setFieldValue(
-    field, "PCASeconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    field, cmp::bridge::kAlignmentConvergedField, this->Alignment == NO_ALIGNMENT || alignment.converged);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kPCASecondsField,
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   vtkPolyData::GetData(outputVector, MEAN)->ShallowCopy(mean);
   vtkTable::GetData(outputVector, COEFFICIENTS)->ShallowCopy(coefficientTable(pca, collection.globalNames));
   vtkTable::GetData(outputVector, VARIANCES)->ShallowCopy(varianceTable(pca));

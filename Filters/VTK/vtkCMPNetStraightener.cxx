@@ -48,8 +48,8 @@ int vtkCMPNetStraightener::FillInputPortInformation(int, vtkInformation* info)
 namespace
 {
 
-constexpr const char* kBaseTriangleArray = "BaseTriangle";
-constexpr const char* kBaseCoordinatesArray = "BaseCoordinates";
+using cmp::bridge::kBaseTriangleArray;
+using cmp::bridge::kBaseCoordinatesArray;
 
 /// The first property out of range, described; "" when all are fine. The
 /// setters do not clamp, so that a wrong value is reported rather than
@@ -64,13 +64,6 @@ std::string propertyProblem(int sweeps, double tolerance, double snap)
   else if (!(snap >= 0.0 && snap < 0.5))
     problem << "SnapTolerance must be at least 0 and below 0.5 (it is " << snap << ")";
   return problem.str();
-}
-
-/// The first problem the independent layout check finds, or "".
-std::string layoutProblem(const cmp::LabelledSurface& surface, const cmp::BaseDomain& domain)
-{
-  const std::vector<std::string> problems = cmp::validateLayout(surface, cmp::toBaseTriangles(domain));
-  return problems.empty() ? "" : problems.front();
 }
 
 /// Point data of the straightened surface: every input array interpolated
@@ -265,26 +258,26 @@ int vtkCMPNetStraightener::RequestData(
   for (vtkPolyData* output : { surfaceOutput, curvesOutput })
   {
     vtkFieldData* field = output->GetFieldData();
-    cmp::bridge::setFieldValue(field, "NetLengthBefore", report.netLengthBefore);
-    cmp::bridge::setFieldValue(field, "NetLengthAfter", report.netLengthAfter);
-    cmp::bridge::setFieldValue(field, "NetLengthPerSqrtAreaAfter", lengthPerSqrtArea);
-    cmp::bridge::setFieldValue(field, "AreaVariationBefore", report.areaVariationBefore);
-    cmp::bridge::setFieldValue(field, "AreaVariationAfter", report.areaVariationAfter);
-    cmp::bridge::setFieldValue(field, "Sweeps", report.sweeps);
-    cmp::bridge::setFieldValue(field, "SkippedStars", report.skippedStars);
-    cmp::bridge::setFieldValue(field, "FlippedTriangles", parameterization.flippedTriangles);
-    cmp::bridge::setFieldValue(field, "SmallestAreaRatio", parameterization.smallestAreaRatio);
-    cmp::bridge::setFieldValue(field, "WidestCurveGap", widestGap.degrees);
-    cmp::bridge::setFieldValue(field, "WidestCurveGapFeature", widestGapFeature);
-    cmp::bridge::setFieldValue(field, "NetValid", problem.empty() ? 1 : 0);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthBeforeField, report.netLengthBefore);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthAfterField, report.netLengthAfter);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthPerSqrtAreaAfterField, lengthPerSqrtArea);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kAreaVariationBeforeField, report.areaVariationBefore);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kAreaVariationAfterField, report.areaVariationAfter);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSweepsField, report.sweeps);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSkippedStarsField, report.skippedStars);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kFlippedTrianglesField, parameterization.flippedTriangles);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSmallestAreaRatioField, parameterization.smallestAreaRatio);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kWidestCurveGapField, widestGap.degrees);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kWidestCurveGapFeatureField, widestGapFeature);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kNetValidField, problem.empty() ? 1 : 0);
     if (this->FreeCurves)
     {
-      cmp::bridge::setFieldValue(field, "FreeCurvesApplied", freeCurves.applied ? 1 : 0);
-      cmp::bridge::setFieldValue(field, "MapDistortionBefore", freeCurves.map.distortionBefore);
-      cmp::bridge::setFieldValue(field, "MapDistortionAfter", freeCurves.map.distortionAfter);
-      cmp::bridge::setFieldValue(field, "MapSweeps", freeCurves.map.sweeps);
-      cmp::bridge::setFieldValue(field, "MapCrossingVertices", freeCurves.map.crossingVertices);
-      cmp::bridge::setFieldString(field, "FreeCurvesReason", freeCurves.applied ? "" : freeCurves.reason);
+      cmp::bridge::setFieldValue(field, cmp::bridge::kFreeCurvesAppliedField, freeCurves.applied ? 1 : 0);
+      cmp::bridge::setFieldValue(field, cmp::bridge::kMapDistortionBeforeField, freeCurves.map.distortionBefore);
+      cmp::bridge::setFieldValue(field, cmp::bridge::kMapDistortionAfterField, freeCurves.map.distortionAfter);
+      cmp::bridge::setFieldValue(field, cmp::bridge::kMapSweepsField, freeCurves.map.sweeps);
+      cmp::bridge::setFieldValue(field, cmp::bridge::kMapCrossingVerticesField, freeCurves.map.crossingVertices);
+      cmp::bridge::setFieldString(field, cmp::bridge::kFreeCurvesReasonField, freeCurves.applied ? "" : freeCurves.reason);
     }
     // The outputs are built anew: keep the model's name for the remesher.
     cmp::bridge::copySourceFile(input, output);

@@ -21,13 +21,6 @@ namespace cmp::bridge
 namespace
 {
 
-/// The first problem the independent layout check finds, or "".
-std::string layoutProblem(const LabelledSurface& surface, const BaseDomain& domain)
-{
-  const std::vector<std::string> problems = validateLayout(surface, toBaseTriangles(domain));
-  return problems.empty() ? "" : problems.front();
-}
-
 /// Reads the surface and checks what sampling relies on: finite
 /// coordinates and a closed genus-0 manifold. Zero-area triangles are
 /// accepted: the straightener's cuts may leave some, and a point sampled in
@@ -206,7 +199,7 @@ void sampleArrays(vtkDataSetAttributes* output, vtkDataSetAttributes* input, con
       }
     }
     const int attribute = input->IsArrayAnAttribute(i);
-    const bool normals = attribute == vtkDataSetAttributes::NORMALS || (name && !std::strcmp(name, "Normals"));
+    const bool normals = attribute == vtkDataSetAttributes::NORMALS || (name && !std::strcmp(name, kNormalsArray));
     if (normals && isFloating(source) && components == 3)
       renormalize(vtkArrayDownCast<vtkDataArray>(array));
     const int index = output->AddArray(array);

@@ -13,6 +13,8 @@
 #include <cmp/mesh/Status.h>
 #include <cmp/mesh/TriangleMesh.h>
 
+#include "vtkCMPArrayNames.h"
+
 #include <string>
 #include <vector>
 
@@ -21,11 +23,6 @@ class vtkPolyData;
 
 namespace cmp::bridge
 {
-
-/// \brief Name of the point array with each point's base triangle.
-constexpr const char* kBaseTriangleArray = "BaseTriangle";
-/// \brief Name of the point array with each point's barycentric coordinates in it.
-constexpr const char* kBaseCoordinatesArray = "BaseCoordinates";
 
 /// \brief Reads `BaseTriangle` and `BaseCoordinates` (as Net Straightener
 ///        and Semi-Regular Remesher write them), checking every value.

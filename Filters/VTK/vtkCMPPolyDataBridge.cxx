@@ -179,9 +179,9 @@ vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain&
     array->SetNumberOfValues(edges);
     return array;
   };
-  auto baseEdgeIds = intArray("BaseEdgeId");
-  auto featureA = intArray("FeatureIdA");
-  auto featureB = intArray("FeatureIdB");
+  auto baseEdgeIds = intArray(kBaseEdgeIdArray);
+  auto featureA = intArray(kFeatureIdAArray);
+  auto featureB = intArray(kFeatureIdBArray);
   for (vtkIdType e = 0; e < edges; ++e)
   {
     const auto& curve = net.curves[e];

@@ -10,6 +10,8 @@
 #include <cmp/mesh/Status.h>
 #include <cmp/mesh/TriangleMesh.h>
 
+#include "vtkCMPArrayNames.h"
+
 #include <vtkSmartPointer.h>
 
 #include <functional>
@@ -26,21 +28,7 @@ class vtkFieldData;
 namespace cmp::bridge
 {
 
-/// \brief Name of the point array that marks landmark vertices (-1 or 0..F-1).
-constexpr const char* kFeatureIdArray = "FeatureId";
-/// \brief Name of the field array mapping a file's point ids to welded ids.
-constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
-/// \brief Name of the one-value field string array naming the file a surface
-///        was read from, without its folder (set by the surface reader).
-constexpr const char* kSourceFileArray = "SourceFile";
-/// \brief Name of the cell array of per-corner texture coordinates (6 values).
-constexpr const char* kCornerTCoordsArray = "CornerTCoords";
-/// \brief Name of the cell array holding the base triangle (patch) of each triangle.
-constexpr const char* kPatchIdArray = "PatchId";
-/// \brief Name of a remesh's point array: the level at which each vertex appears.
-constexpr const char* kVertexLevelArray = "VertexLevel";
-/// \brief Name of a remesh's cell array: the quadrisection level of each triangle.
-constexpr const char* kLevelArray = "Level";
+// Array names: vtkCMPArrayNames.h.
 
 /// \brief Copies points and triangles; fails, naming the cell, if `input`
 ///        has cells that are not triangles (vertices, lines, polygons, strips).
@@ -75,6 +63,19 @@ vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain&
 
 /// \brief A vtkIntArray named `name` holding `values`.
 vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values);
+
+/// \brief A one-component array of type `ArrayType` (vtkUnsignedCharArray,
+///        vtkIdTypeArray, ...) named `name` holding `values`, converted.
+template <class ArrayType, class Value>
+vtkSmartPointer<ArrayType> valueArray(const char* name, const std::vector<Value>& values)
+{
+  auto array = vtkSmartPointer<ArrayType>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  return array;
+}
 
 /// \brief Adds (or replaces) the point array `FeatureId` of `surface`
 ///        (int: -1, or the feature index at each landmark vertex).

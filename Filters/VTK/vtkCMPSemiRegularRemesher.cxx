@@ -1,17 +1,11 @@
 #include "vtkCMPSemiRegularRemesher.h"
 
-#include <cmp/basedomain/BaseDomainBuilder.h> // triangleShapeQuality
-#include <cmp/remesh/FoldRepair.h>
-#include <cmp/layout/PatchLayout.h>
-#include <cmp/remesh/SampleRelaxation.h>
-#include <cmp/remesh/SemiRegularRemesher.h>
-#include <cmp/mesh/SurfaceDistance.h>
+#include <cmp/numerics/Communicator.h>
+#include <cmp/remesh/Remesh.h>
 #include "vtkCMPCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPParameterizedInput.h"
 #include "vtkCMPPolyDataBridge.h"
-
-#include <Eigen/Geometry>
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -33,11 +27,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <functional>
-#include <limits>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -102,30 +92,19 @@ double secondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-
-/// What every model's remesh shares: the connectivity and the arrays that
-/// depend only on L0 and the level. Built once; the outputs share the VTK
-/// objects (the same cell array, byte for byte).
-struct SharedRemesh
+/// The VTK objects every model's remesh shares: the connectivity and the
+/// arrays that depend only on L0 and the level. Built once; the outputs
+/// share them (the same cell array, byte for byte).
+struct SharedArrays
 {
-  cmp::SemiRegularMesh mesh;
   vtkSmartPointer<vtkCellArray> polys;
   vtkSmartPointer<vtkIntArray> patchIds, levels, baseTriangles, vertexLevels;
   vtkSmartPointer<vtkDoubleArray> baseCoordinates;
   std::vector<int> featureIds; ///< f at vertex f, -1 elsewhere.
-  std::vector<int> nearestLandmark; ///< Per triangle, for FoldsNearFeature.
-  int relaxationRounds = 0;         ///< Sample relaxation rounds made.
-  double relaxationSeconds = 0.0;   ///< Their time (the whole collection's).
-
-  /// The relaxation's figures, on every output.
-  void describeRelaxation(vtkFieldData* field) const
-  {
-    cmp::bridge::setFieldValue(field, "SampleRelaxationRounds", relaxationRounds);
-    cmp::bridge::setFieldValue(field, "SampleRelaxationSeconds", relaxationSeconds);
-  }
 
   /// Output 1: the connectivity drawn on L0.
-  vtkSmartPointer<vtkPolyData> build(const cmp::BaseDomain& domain)
+  vtkSmartPointer<vtkPolyData> build(
+    const cmp::SemiRegularMesh& mesh, const cmp::BaseDomain& domain, const cmp::RemeshReport& report)
   {
     const int vertices = mesh.vertexCount();
     cmp::TriangleMesh drawn;
@@ -161,7 +140,6 @@ struct SharedRemesh
     featureIds.assign(vertices, -1);
     for (int f = 0; f < domain.mesh.vertexCount(); ++f)
       featureIds[f] = f;
-    nearestLandmark = cmp::nearestLandmarkOfTriangles(mesh, domain.mesh.vertexCount());
 
     vtkPointData* points = connectivity->GetPointData();
     points->AddArray(baseTriangles);
@@ -171,18 +149,31 @@ struct SharedRemesh
     connectivity->GetCellData()->AddArray(patchIds);
     connectivity->GetCellData()->AddArray(levels);
     vtkFieldData* field = connectivity->GetFieldData();
-    cmp::bridge::setFieldValue(field, "RemeshLevel", mesh.level);
-    cmp::bridge::setFieldValue(field, "VertexCount", vertices);
-    cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(mesh.triangles.size()));
-    describeRelaxation(field);
+    describeSize(field, mesh);
+    describeRelaxation(field, report);
     return connectivity;
+  }
+
+  /// The remesh's size, on every output.
+  static void describeSize(vtkFieldData* field, const cmp::SemiRegularMesh& mesh)
+  {
+    cmp::bridge::setFieldValue(field, cmp::bridge::kRemeshLevelField, mesh.level);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kVertexCountField, mesh.vertexCount());
+    cmp::bridge::setFieldValue(field, cmp::bridge::kTriangleCountField, static_cast<double>(mesh.triangles.size()));
+  }
+
+  /// The relaxation's figures, on every output.
+  static void describeRelaxation(vtkFieldData* field, const cmp::RemeshReport& report)
+  {
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSampleRelaxationRoundsField, report.sampleRelaxationRounds);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kSampleRelaxationSecondsField, report.sampleRelaxationSeconds);
   }
 };
 
 /// Point data of one remesh: every input point array carried to the remesh
 /// vertices, FeatureId written anew, and the shared base-domain arrays.
 void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<cmp::SurfaceSample>& samples,
-  const SharedRemesh& shared)
+  const SharedArrays& shared)
 {
   const auto vertices = static_cast<vtkIdType>(samples.size());
   // Rewritten or replaced below: FeatureId marks exactly the landmarks, the
@@ -205,190 +196,74 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<
   points->AddArray(shared.vertexLevels);
 }
 
-/// Shape of the remesh and its orientation against the input surface.
-struct RemeshQuality
+/// One model read back from its arrays (layout and map indexed), with the
+/// time that took.
+struct PreparedInput
 {
-  std::vector<char> folded; ///< Per triangle: faces against the surface.
-  int flippedTriangles = 0;
-  double minimumAngleDegrees = 0.0;
-  double meanShapeQuality = 0.0;
+  PreparedInput(const cmp::BaseDomain& domain, vtkPolyData* surface)
+    : input(domain, surface)
+  {
+  }
+  cmp::bridge::ParameterizedInput input;
+  double rebuildSeconds = 0.0;
 };
 
-RemeshQuality measureQuality(const cmp::SemiRegularMesh& remesh, const std::vector<cmp::Vec3>& positions,
-  const std::vector<cmp::SurfaceSample>& samples, const cmp::EditableMesh& surface)
+/// The remesh of one model as VTK data: the core's placement and figures,
+/// the input's point arrays carried over, the shared arrays added.
+vtkSmartPointer<vtkPolyData> toOutput(const PreparedInput& prepared, const cmp::SemiRegularMesh& mesh,
+  const cmp::RemeshedModel& placed, const cmp::RemeshModelReport& figures, const cmp::RemeshReport& report,
+  const SharedArrays& shared)
 {
-  RemeshQuality quality;
-  double minimumAngle = M_PI, qualitySum = 0.0;
-  for (const cmp::Triangle& tri : remesh.triangles)
+  const Clock::time_point start = Clock::now();
+  const cmp::bridge::ParameterizedInput& input = prepared.input;
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(placed.positions.size()));
+  for (std::size_t v = 0; v < placed.positions.size(); ++v)
+    points->SetPoint(static_cast<vtkIdType>(v), placed.positions[v].data());
+  auto remesh = vtkSmartPointer<vtkPolyData>::New();
+  remesh->SetPoints(points);
+  remesh->SetPolys(shared.polys);
+  fillPointData(remesh->GetPointData(), input.input()->GetPointData(), placed.samples, shared);
+  remesh->GetCellData()->AddArray(shared.patchIds);
+  remesh->GetCellData()->AddArray(shared.levels);
+  // Per model, unlike PatchId and Level: lets a user threshold the folds.
+  remesh->GetCellData()->AddArray(
+    cmp::bridge::valueArray<vtkUnsignedCharArray>(cmp::bridge::kFoldedArray, placed.folded));
+
+  vtkFieldData* field = remesh->GetFieldData();
+  // Where folds stay after repair, the landmark to move or to add one
+  // beside: one count per feature, in FeatureId order.
+  field->AddArray(intArray(cmp::bridge::kFoldsNearFeatureArray, placed.foldsNearFeature));
+  // The remesh is still that model: keep its name (never on the shared
+  // connectivity output, which is no model's).
+  cmp::bridge::copySourceFile(input.input(), remesh);
+  SharedArrays::describeSize(field, mesh);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kFlippedTrianglesField, figures.foldedAfterRepair);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kFoldedBeforeRepairField, figures.foldedBeforeRepair);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kRepairedVerticesField, figures.repair.movedVertices);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kMinimumAngleField, figures.minimumAngleDegrees);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kMeanShapeQualityField, figures.meanShapeQuality);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kRebuildSecondsField, prepared.rebuildSeconds);
+  SharedArrays::describeRelaxation(field, report);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kPlacementSecondsField, figures.placementSeconds);
+  if (figures.distanceMeasured)
   {
-    const cmp::Vec3 &a = positions[tri[0]], &b = positions[tri[1]], &c = positions[tri[2]];
-    for (int k = 0; k < 3; ++k)
-    {
-      const cmp::Vec3 e1 = positions[tri[(k + 1) % 3]] - positions[tri[k]];
-      const cmp::Vec3 e2 = positions[tri[(k + 2) % 3]] - positions[tri[k]];
-      minimumAngle = std::min(minimumAngle, std::atan2(e1.cross(e2).norm(), e1.dot(e2)));
-    }
-    qualitySum += cmp::triangleShapeQuality(a, b, c);
-  }
-  quality.folded = cmp::foldedTriangles(remesh, surface, samples);
-  quality.flippedTriangles = static_cast<int>(std::count(quality.folded.begin(), quality.folded.end(), 1));
-  quality.minimumAngleDegrees = minimumAngle * 180.0 / M_PI;
-  quality.meanShapeQuality = qualitySum / std::max<std::size_t>(1, remesh.triangles.size());
-  return quality;
-}
-
-/// The base vertex whose landmark lies nearest to `point` (straight-line
-/// distance in `distance`), -1 if the net has none.
-int nearestLandmark(const cmp::TracedNet& net, const cmp::Vec3& point, double& distance)
-{
-  int nearest = -1;
-  distance = std::numeric_limits<double>::infinity();
-  for (std::size_t b = 0; b < net.landmarkVertex.size(); ++b)
-  {
-    if (net.landmarkVertex[b] < 0)
-      continue;
-    const double d = (net.mesh.point(net.landmarkVertex[b]) - point).norm();
-    if (d < distance)
-    {
-      distance = d;
-      nearest = static_cast<int>(b);
-    }
-  }
-  return nearest;
-}
-
-/// The filter's work on one model, in two steps: `prepare()` rebuilds the
-/// layout and its map (every model is prepared before the shared
-/// connectivity is built, because adaptive refinement asks all of them),
-/// `place()` puts the shared remesh on it. Not movable: the parameterized
-/// surface points into the net.
-class ModelRemesher
-{
-public:
-  ModelRemesher(const cmp::BaseDomain& domain, vtkPolyData* input)
-    : input_(domain, input)
-  {
-  }
-  ModelRemesher(const ModelRemesher&) = delete;
-  ModelRemesher& operator=(const ModelRemesher&) = delete;
-
-  const cmp::ParameterizedSurface& surface() const { return input_.surface(); }
-
-  cmp::Status prepare()
-  {
-    const Clock::time_point start = Clock::now();
-    cmp::Status status = input_.prepare();
-    rebuildSeconds_ = secondsSince(start);
-    return status;
-  }
-
-  cmp::Status place(const SharedRemesh& shared, bool computeDistance, bool repairFolds, vtkPolyData* output,
-    const std::function<void(double)>& progress)
-  {
-    const Clock::time_point placementStart = Clock::now();
-    std::vector<cmp::SurfaceSample> samples;
-    if (cmp::Status placed = cmp::placeOnSurface(shared.mesh, input_.surface(), samples); !placed.ok())
-      return cmp::Status::error("cannot place the remesh on the input (BaseTriangle and BaseCoordinates do not "
-                                "fit its PatchId): " +
-        placed.message());
-    cmp::FoldRepairReport repair;
-    if (repairFolds)
-    {
-      if (cmp::Status repaired = cmp::repairFolds(shared.mesh, input_.net().mesh, samples, {}, &repair);
-          !repaired.ok())
-        return repaired;
-    }
-    const std::vector<cmp::Vec3> positions = cmp::samplePositions(input_.net(), samples);
-    const double placementSeconds = secondsSince(placementStart);
-    progress(0.5);
-
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
-    for (std::size_t v = 0; v < positions.size(); ++v)
-      points->SetPoint(static_cast<vtkIdType>(v), positions[v].data());
-    auto remesh = vtkSmartPointer<vtkPolyData>::New();
-    remesh->SetPoints(points);
-    remesh->SetPolys(shared.polys);
-    fillPointData(remesh->GetPointData(), input_.input()->GetPointData(), samples, shared);
-    remesh->GetCellData()->AddArray(shared.patchIds);
-    remesh->GetCellData()->AddArray(shared.levels);
-    const RemeshQuality quality = measureQuality(shared.mesh, positions, samples, input_.net().mesh);
-    // Per model, unlike PatchId and Level: lets a user threshold the folds.
-    auto folded = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    folded->SetName("Folded");
-    folded->SetNumberOfValues(static_cast<vtkIdType>(quality.folded.size()));
-    for (std::size_t t = 0; t < quality.folded.size(); ++t)
-      folded->SetValue(static_cast<vtkIdType>(t), quality.folded[t]);
-    remesh->GetCellData()->AddArray(folded);
-    progress(0.7);
-
-    vtkFieldData* field = remesh->GetFieldData();
-    // Where folds stay after repair, the landmark to move or to add one
-    // beside: one count per feature, in FeatureId order.
-    const std::vector<int> foldsNear = cmp::foldsNearLandmarks(
-      shared.nearestLandmark, static_cast<int>(input_.domain().featureIds.size()), quality.folded);
-    auto foldsNearFeature = vtkSmartPointer<vtkIntArray>::New();
-    foldsNearFeature->SetName("FoldsNearFeature");
-    foldsNearFeature->SetNumberOfValues(static_cast<vtkIdType>(foldsNear.size()));
-    for (std::size_t f = 0; f < foldsNear.size(); ++f)
-      foldsNearFeature->SetValue(static_cast<vtkIdType>(f), foldsNear[f]);
-    field->AddArray(foldsNearFeature);
-    // The remesh is still that model: keep its name (never on the shared
-    // connectivity output, which is no model's).
-    cmp::bridge::copySourceFile(input_.input(), remesh);
-    cmp::bridge::setFieldValue(field, "RemeshLevel", shared.mesh.level);
-    cmp::bridge::setFieldValue(field, "VertexCount", shared.mesh.vertexCount());
-    cmp::bridge::setFieldValue(field, "TriangleCount", static_cast<double>(shared.mesh.triangles.size()));
-    cmp::bridge::setFieldValue(field, "FlippedTriangles", quality.flippedTriangles);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kHausdorffDistanceField, figures.hausdorffDistance);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kHausdorffDistanceRelativeField, figures.hausdorffDistanceRelative);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kMeanDistanceField, figures.meanDistance);
+    cmp::bridge::setFieldTuple(field, cmp::bridge::kHausdorffPointField, figures.hausdorffPoint);
     cmp::bridge::setFieldValue(
-      field, "FoldedBeforeRepair", repairFolds ? repair.foldedBefore : quality.flippedTriangles);
-    cmp::bridge::setFieldValue(field, "RepairedVertices", repair.movedVertices);
-    cmp::bridge::setFieldValue(field, "MinimumAngle", quality.minimumAngleDegrees);
-    cmp::bridge::setFieldValue(field, "MeanShapeQuality", quality.meanShapeQuality);
-    cmp::bridge::setFieldValue(field, "RebuildSeconds", rebuildSeconds_);
-    shared.describeRelaxation(field);
-    cmp::bridge::setFieldValue(field, "PlacementSeconds", placementSeconds);
-    if (computeDistance)
-    {
-      // Sampled both ways: input to remesh catches features the remesh cuts
-      // off, remesh to input catches triangles spanning concave regions.
-      const Clock::time_point distanceStart = Clock::now();
-      const cmp::SurfaceDistance distance =
-        cmp::surfaceDistance(input_.mesh(), cmp::TriangleMesh{ positions, shared.mesh.triangles });
-      const double hausdorff = distance.hausdorff();
-      const double diagonal = cmp::boundingBoxDiagonal(input_.mesh());
-      cmp::bridge::setFieldValue(field, "HausdorffDistance", hausdorff);
-      cmp::bridge::setFieldValue(field, "HausdorffDistanceRelative", diagonal > 0.0 ? hausdorff / diagonal : 0.0);
-      cmp::bridge::setFieldValue(field, "MeanDistance", 0.5 * (distance.meanAToB + distance.meanBToA));
-      setFarthestPoint(field, distance, diagonal);
-      cmp::bridge::setFieldValue(field, "DistanceSeconds", secondsSince(distanceStart));
-    }
-    cmp::bridge::setFieldValue(field, "TotalSeconds", rebuildSeconds_ + secondsSince(placementStart));
-    output->ShallowCopy(remesh);
-    progress(1.0);
-    return {};
-  }
-
-private:
-  /// Where the Hausdorff distance is reached, and the landmark nearest to
-  /// it: a part without a landmark that the remesh misses (a tail's tip)
-  /// shows up here, and a landmark there is the cure.
-  void setFarthestPoint(vtkFieldData* field, const cmp::SurfaceDistance& distance, double diagonal) const
-  {
-    const cmp::Vec3 farthest = distance.farthestPoint();
-    cmp::bridge::setFieldTuple(field, "HausdorffPoint", farthest);
-    cmp::bridge::setFieldValue(field, "HausdorffPointOnInput", distance.reachedOnA() ? 1.0 : 0.0);
-    double landmarkDistance = 0.0;
-    const int base = nearestLandmark(input_.net(), farthest, landmarkDistance);
-    cmp::bridge::setFieldValue(field, "HausdorffNearestFeature", base >= 0 ? input_.domain().featureIds[base] : -1.0);
+      field, cmp::bridge::kHausdorffPointOnInputField, figures.hausdorffPointOnInput ? 1.0 : 0.0);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kHausdorffNearestFeatureField, figures.hausdorffNearestFeature);
     cmp::bridge::setFieldValue(
-      field, "HausdorffFeatureDistanceRelative", base >= 0 && diagonal > 0.0 ? landmarkDistance / diagonal : 0.0);
+      field, cmp::bridge::kHausdorffFeatureDistanceRelativeField, figures.hausdorffFeatureDistanceRelative);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kDistanceSecondsField, figures.distanceSeconds);
   }
-
-  cmp::bridge::ParameterizedInput input_;
-  double rebuildSeconds_ = 0.0;
-};
+  cmp::bridge::setFieldValue(
+    field, cmp::bridge::kTotalSecondsField, prepared.rebuildSeconds + figures.seconds + secondsSince(start));
+  return remesh;
+}
 
 } // namespace
 
@@ -405,20 +280,16 @@ int vtkCMPSemiRegularRemesher::RequestData(
     output->Initialize();
     return 0;
   };
+  cmp::RemeshOptions options;
+  options.level = this->Level;
+  options.adaptiveTolerance = this->AdaptiveTolerance;
+  options.sampleRelaxationIterations = this->SampleRelaxationIterations;
+  options.repairFolds = this->RepairFolds;
+  options.computeDistance = this->ComputeDistance;
+  options.progress = [this](double f) { this->UpdateProgress(0.3 + 0.4 * f); };
   // The properties are the same on every rank: a bad one stops them all.
-  if (!cmp::isRemeshLevel(this->Level))
-    return fail("Level must be between 0 and " + std::to_string(cmp::kMaximumRemeshLevel) + " (it is " +
-      std::to_string(this->Level) + ")");
-  if (!(this->AdaptiveTolerance >= 0.0) || !std::isfinite(this->AdaptiveTolerance))
-  {
-    std::ostringstream message;
-    message << "AdaptiveTolerance must be 0 (uniform) or a positive fraction of the bounding-box diagonal (it is "
-            << this->AdaptiveTolerance << ")";
-    return fail(message.str());
-  }
-  if (this->SampleRelaxationIterations < 0)
-    return fail("SampleRelaxationIterations must be 0 (none) or a positive number of rounds (it is " +
-      std::to_string(this->SampleRelaxationIterations) + ")");
+  if (cmp::Status checked = cmp::checkRemeshOptions(options); !checked.ok())
+    return fail(checked.message());
 
   // The inputs may differ between ranks. Relaxation sums over every rank's
   // models, so with it a rank whose input fails says so to the others
@@ -434,59 +305,44 @@ int vtkCMPSemiRegularRemesher::RequestData(
   cmp::bridge::SurfaceCollection collection;
   if (local.ok())
     local = cmp::bridge::collectSurfaces(input, collection, /*allowEmpty=*/relax && communicator.size() > 1);
-  std::vector<std::unique_ptr<ModelRemesher>> models;
+  // Not movable: each index points into its layout.
+  std::vector<std::unique_ptr<PreparedInput>> prepared;
   if (local.ok())
     for (vtkPolyData* surface : collection.surfaces)
-      models.push_back(std::make_unique<ModelRemesher>(domain, surface));
+      prepared.push_back(std::make_unique<PreparedInput>(domain, surface));
   const std::vector<std::string>& names = collection.labels;
-  const double modelCount = std::max<double>(1.0, static_cast<double>(models.size()));
-  for (std::size_t m = 0; m < models.size() && local.ok(); ++m)
+  const double modelCount = std::max<double>(1.0, static_cast<double>(prepared.size()));
+  for (std::size_t m = 0; m < prepared.size() && local.ok(); ++m)
   {
-    if (cmp::Status status = models[m]->prepare(); !status.ok())
+    const Clock::time_point start = Clock::now();
+    if (cmp::Status status = prepared[m]->input.prepare(); !status.ok())
       local = cmp::Status::error(names[m] + status.message());
+    prepared[m]->rebuildSeconds = secondsSince(start);
     this->UpdateProgress(0.3 * (m + 1) / modelCount);
   }
-  std::vector<const cmp::ParameterizedSurface*> surfaces;
-  for (const auto& model : models)
-    surfaces.push_back(&model->surface());
-
-  // One connectivity for the whole collection: with a tolerance, a triangle
-  // is split when any model needs it.
-  SharedRemesh shared;
-  if (local.ok())
-    local = this->AdaptiveTolerance > 0.0
-      ? cmp::buildAdaptiveSemiRegularMesh(
-          domain, this->Level, cmp::flatnessSplitRule(surfaces, this->AdaptiveTolerance), shared.mesh)
-      : cmp::buildSemiRegularMesh(domain, this->Level, shared.mesh);
   if (relax)
     local = cmp::agreeOnStatus(local, communicator);
   if (!local.ok())
     return fail(local.message());
-  if (relax)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    cmp::SampleRelaxationOptions options;
-    options.iterations = this->SampleRelaxationIterations;
-    cmp::SampleRelaxationReport report;
-    if (cmp::Status relaxed =
-          cmp::relaxSampleLocations(domain, surfaces, communicator, shared.mesh, options, &report);
-        !relaxed.ok())
-      return fail("sample relaxation: " + relaxed.message());
-    shared.relaxationRounds = report.iterations;
-    shared.relaxationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  vtkSmartPointer<vtkPolyData> connectivity = shared.build(domain);
-  this->UpdateProgress(0.4);
 
+  // The whole stage in the core: one connectivity for the collection,
+  // placed on every model, repaired and measured.
+  std::vector<cmp::RemeshModel> models;
+  for (const auto& model : prepared)
+    models.push_back({ &model->input.mesh(), &model->input.surface() });
+  cmp::CollectionRemesh remesh;
+  cmp::RemeshReport report;
+  if (cmp::Status status = cmp::remesh(domain, models, communicator, remesh, options, &report); !status.ok())
+    return fail(report.failedModel >= 0 ? names[report.failedModel] + status.message() : status.message());
+
+  SharedArrays shared;
+  vtkSmartPointer<vtkPolyData> connectivity = shared.build(remesh.mesh, domain, report);
   std::vector<vtkSmartPointer<vtkPolyData>> results;
-  for (std::size_t m = 0; m < models.size(); ++m)
+  for (std::size_t m = 0; m < prepared.size(); ++m)
   {
-    results.push_back(vtkSmartPointer<vtkPolyData>::New());
-    const auto progress = [this, m, modelCount](double f) { this->UpdateProgress(0.4 + 0.6 * (m + f) / modelCount); };
-    if (cmp::Status placed =
-          models[m]->place(shared, this->ComputeDistance, this->RepairFolds, results.back(), progress);
-        !placed.ok())
-      return fail(names[m] + placed.message());
+    results.push_back(
+      toOutput(*prepared[m], remesh.mesh, remesh.models[m], report.models[m], report, shared));
+    this->UpdateProgress(0.7 + 0.3 * (m + 1) / modelCount);
   }
   cmp::bridge::assembleOutput(input, output, results);
   connectivityOutput->ShallowCopy(connectivity);

@@ -108,9 +108,9 @@ int vtkCMPShapeBlend::RequestData(vtkInformation*, vtkInformationVector** inputV
   vtkSmartPointer<vtkPolyData> result = cmp::bridge::toPolyData(blend.positions, collection.triangles);
   cmp::bridge::copyCorrespondenceArrays(
     collection.surfaces.surfaces.empty() ? nullptr : collection.surfaces.surfaces[0], result);
-  cmp::bridge::setFieldValue(result->GetFieldData(), "Extrapolating", blend.extrapolating ? 1.0 : 0.0);
+  cmp::bridge::setFieldValue(result->GetFieldData(), cmp::bridge::kExtrapolatingField, blend.extrapolating ? 1.0 : 0.0);
   auto weights = vtkSmartPointer<vtkDoubleArray>::New();
-  weights->SetName("Weights");
+  weights->SetName(cmp::bridge::kWeightsArray);
   for (double w : this->Weights)
     weights->InsertNextValue(w);
   result->GetFieldData()->AddArray(weights);

@@ -195,24 +195,24 @@ void addPLYAttributes(const cmp::MeshFileData& data, vtkPolyData* surface)
 {
   vtkNew<vtkPointData> filePoints;
   const auto& points = data.pointProperties;
-  if (auto normals = propertyArray<vtkFloatArray>(points, "Normals", { { "nx" }, { "ny" }, { "nz" } }))
+  if (auto normals = propertyArray<vtkFloatArray>(points, cmp::bridge::kNormalsArray, { { "nx" }, { "ny" }, { "nz" } }))
     filePoints->SetNormals(normals);
-  auto colors = propertyArray<vtkUnsignedCharArray>(points, "RGBA",
+  auto colors = propertyArray<vtkUnsignedCharArray>(points, cmp::bridge::kRGBAArray,
     { { "red", "diffuse_red" }, { "green", "diffuse_green" }, { "blue", "diffuse_blue" }, { "alpha" } });
   if (!colors)
-    colors = propertyArray<vtkUnsignedCharArray>(
-      points, "RGB", { { "red", "diffuse_red" }, { "green", "diffuse_green" }, { "blue", "diffuse_blue" } });
+    colors = propertyArray<vtkUnsignedCharArray>(points, cmp::bridge::kRGBArray,
+      { { "red", "diffuse_red" }, { "green", "diffuse_green" }, { "blue", "diffuse_blue" } });
   if (colors)
     filePoints->SetScalars(colors);
-  auto tcoords = propertyArray<vtkFloatArray>(points, "TCoords", { { "u" }, { "v" } });
+  auto tcoords = propertyArray<vtkFloatArray>(points, cmp::bridge::kTCoordsArray, { { "u" }, { "v" } });
   if (!tcoords)
-    tcoords = propertyArray<vtkFloatArray>(points, "TCoords", { { "texture_u" }, { "texture_v" } });
+    tcoords = propertyArray<vtkFloatArray>(points, cmp::bridge::kTCoordsArray, { { "texture_u" }, { "texture_v" } });
   if (tcoords)
     filePoints->SetTCoords(tcoords);
   if (filePoints->GetNumberOfArrays() > 0)
     copyWeldedPointData(filePoints, data.fileToMeshPoint, surface);
   if (auto faceColors = propertyArray<vtkUnsignedCharArray>(
-        data.triangleProperties, "RGB", { { "red" }, { "green" }, { "blue" } }))
+        data.triangleProperties, cmp::bridge::kRGBArray, { { "red" }, { "green" }, { "blue" } }))
     surface->GetCellData()->SetScalars(faceColors);
 }
 
@@ -243,7 +243,7 @@ void addTextureCoordinates(const cmp::MeshFileData& data, vtkPolyData* output)
   if (!seamless)
     return;
   auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
-  tcoords->SetName("TCoords");
+  tcoords->SetName(cmp::bridge::kTCoordsArray);
   tcoords->SetNumberOfComponents(2);
   tcoords->SetNumberOfTuples(data.mesh.vertexCount());
   for (int v = 0; v < data.mesh.vertexCount(); ++v)
@@ -320,15 +320,9 @@ int vtkCMPSurfaceReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   if (!data.pointProperties.empty() || !data.triangleProperties.empty())
     addPLYAttributes(data, surface);
   if (welded > 0)
-  {
-    auto map = vtkSmartPointer<vtkIdTypeArray>::New();
-    map->SetName(cmp::bridge::kFileToMeshPointArray);
-    map->SetNumberOfValues(static_cast<vtkIdType>(data.fileToMeshPoint.size()));
-    for (std::size_t i = 0; i < data.fileToMeshPoint.size(); ++i)
-      map->SetValue(static_cast<vtkIdType>(i), data.fileToMeshPoint[i]);
-    surface->GetFieldData()->AddArray(map);
-  }
-  cmp::bridge::setFieldValue(surface->GetFieldData(), "WeldedPointCount", welded);
+    surface->GetFieldData()->AddArray(
+      cmp::bridge::valueArray<vtkIdTypeArray>(cmp::bridge::kFileToMeshPointArray, data.fileToMeshPoint));
+  cmp::bridge::setFieldValue(surface->GetFieldData(), cmp::bridge::kWeldedPointCountField, welded);
   // Names the model in the messages of the filters downstream (which see one
   // block of a collection at a time, without its name); the folder is left
   // out because it is the same for a whole collection and makes lines long.

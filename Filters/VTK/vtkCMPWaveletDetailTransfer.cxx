@@ -2,6 +2,7 @@
 
 #include <cmp/analysis/DetailTransfer.h>
 #include <cmp/analysis/LoopWavelet.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
 #include "vtkCMPConsistentCollection.h"
 #include "vtkCMPControllerCommunicator.h"
 #include "vtkCMPPolyDataBridge.h"
@@ -219,6 +220,12 @@ int vtkCMPWaveletDetailTransfer::RequestData(
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkMultiBlockDataSet* levelsOutput = vtkMultiBlockDataSet::GetData(outputVector, 1);
+  // The properties are the same on every rank: a bad one stops them all.
+  if (!cmp::isRemeshLevel(this->LastCoarseLevel))
+  {
+    vtkErrorMacro(<< cmp::remeshLevelProblem("LastCoarseLevel", this->LastCoarseLevel));
+    return 0;
+  }
   cmp::bridge::ControllerCommunicator communicator(this->Controller);
   cmp::bridge::ConsistentCollection collection;
   if (cmp::Status s = cmp::bridge::readConsistentCollection(input, communicator, collection); !s.ok())
@@ -309,12 +316,12 @@ int vtkCMPWaveletDetailTransfer::RequestData(
   if (!result->GetCellData()->HasArray(kLevelArray))
     result->GetCellData()->AddArray(intArray(kLevelArray, coarse.triangleLevels));
   vtkPointData* points = result->GetPointData();
-  points->AddArray(coefficientArray("WaveletCoefficients", blended.values));
-  points->AddArray(coefficientArray("CoarseModelCoefficients", coarseCoefficients.values));
-  points->AddArray(coefficientArray("DetailModelCoefficients", detailCoefficients.values));
+  points->AddArray(coefficientArray(cmp::bridge::kWaveletCoefficientsArray, blended.values));
+  points->AddArray(coefficientArray(cmp::bridge::kCoarseModelCoefficientsArray, coarseCoefficients.values));
+  points->AddArray(coefficientArray(cmp::bridge::kDetailModelCoefficientsArray, detailCoefficients.values));
   Eigen::MatrixXd magnitude = blended.values.rowwise().norm();
   magnitude.topRows(transform.vertexCount(0)).setZero(); // positions there, not details
-  points->AddArray(coefficientArray("DetailMagnitude", magnitude));
+  points->AddArray(coefficientArray(cmp::bridge::kDetailMagnitudeArray, magnitude));
 
   if (cmp::Status s = levelMeshes(transform, blended, result, levelsOutput); !s.ok())
   {
@@ -322,11 +329,11 @@ int vtkCMPWaveletDetailTransfer::RequestData(
     return 0;
   }
   auto weights = vtkSmartPointer<vtkDoubleArray>::New();
-  weights->SetName("DetailWeights");
+  weights->SetName(cmp::bridge::kDetailWeightsArray);
   for (double w : schedule)
     weights->InsertNextValue(w);
   result->GetFieldData()->AddArray(weights);
-  cmp::bridge::setFieldValue(result->GetFieldData(), "TransferSeconds",
+  cmp::bridge::setFieldValue(result->GetFieldData(), cmp::bridge::kTransferSecondsField,
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   output->ShallowCopy(result);
   this->UpdateProgress(1.0);

@@ -58,7 +58,10 @@ public:
   /// \brief Without `DetailWeights`: the finest level whose details come
   ///        from the coarse model (default 2); the detail model gives every
   ///        level above. 0 puts all its details on the coarsest mesh.
-  vtkSetClampMacro(LastCoarseLevel, int, 0, 8);
+  ///        Must be a remesh level (0 to 8) not above the remesh's finest
+  ///        level; not clamped: a value out of range is reported when the
+  ///        filter runs.
+  vtkSetMacro(LastCoarseLevel, int);
   /// \brief The finest level whose details come from the coarse model.
   vtkGetMacro(LastCoarseLevel, int);
 

@@ -1,12 +1,11 @@
 #include "BenchmarkStages.h"
 
 #include <cmp/map/GlobalMap.h>
-#include <cmp/remesh/FoldRepair.h>
 
 #include <cmp/analysis/LoopWavelet.h>
+#include <cmp/remesh/Remesh.h>
 #include <cmp/remesh/SampleRelaxation.h>
 #include <cmp/mesh/Subdivision.h>
-#include <cmp/mesh/SurfaceDistance.h>
 
 #include <chrono>
 #include <cmath>
@@ -129,16 +128,28 @@ int remeshLevel(const ModelSpec& spec)
   return isSubdivided(spec) ? 6 : 5;
 }
 
-/// \brief The semi-regular remesh of `level` placed on the model's surface
-///        through `parameterization`: connectivity, samples, positions.
-Status remeshAt(const ModelContext& ctx, const PatchParameterization& parameterization, int level,
-  SemiRegularMesh& remesh, std::vector<SurfaceSample>& samples, std::vector<Vec3>& points)
+/// \brief The remesh stage's options for the measurements below: `level`,
+///        with or without the fold repair and the distance, no relaxation.
+RemeshOptions remeshOptions(int level, bool repairFolds, bool computeDistance)
 {
-  if (Status status = buildSemiRegularMesh(ctx.traceDomain(), level, remesh); !status.ok())
-    return status;
-  const Status status = placeOnSurface(remesh, ctx.straight.net, ctx.traceDomain(), parameterization, samples);
+  RemeshOptions options;
+  options.level = level;
+  options.repairFolds = repairFolds;
+  options.computeDistance = computeDistance;
+  return options;
+}
+
+/// \brief The remesh stage (`remesh()`) on the model's surface, laid out by
+///        `net` and mapped by `parameterization`; its figures in `figures`.
+Status remeshAt(const ModelContext& ctx, const TracedNet& net, const PatchParameterization& parameterization,
+  const RemeshOptions& options, CollectionRemesh& out, RemeshModelReport& figures, RemeshReport* report = nullptr)
+{
+  RemeshReport local;
+  const Status status = remesh(ctx.surface(), net, ctx.traceDomain(), parameterization, out, options, &local);
   if (status.ok())
-    points = samplePositions(ctx.straight.net, samples);
+    figures = local.models.front();
+  if (report)
+    *report = std::move(local);
   return status;
 }
 
@@ -150,22 +161,21 @@ Status remeshStage(ModelContext& ctx)
   ctx.remeshSamples = std::vector<SurfaceSample>();
   ctx.remeshPoints = std::vector<Vec3>();
   const int level = remeshLevel(ctx.spec);
-  Status status = remeshAt(ctx, ctx.parameterization, level, ctx.remesh, ctx.remeshSamples, ctx.remeshPoints);
-  if (!status.ok())
+  CollectionRemesh result;
+  RemeshModelReport figures;
+  if (Status status = remeshAt(ctx, ctx.straight.net, ctx.parameterization,
+        remeshOptions(level, /*repairFolds=*/true, /*computeDistance=*/false), result, figures);
+      !status.ok())
     return status;
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
-  FoldRepairReport repair;
-  status = repairFolds(ctx.remesh, ctx.straight.net.mesh, ctx.remeshSamples, {}, &repair);
-  if (!status.ok())
-    return status;
-  ctx.remeshPoints = samplePositions(ctx.straight.net, ctx.remeshSamples);
-  setFigure(ctx.figures, "fold_repair_seconds", std::chrono::duration<double>(Clock::now() - start).count());
+  ctx.remesh = std::move(result.mesh);
+  ctx.remeshSamples = std::move(result.models.front().samples);
+  ctx.remeshPoints = std::move(result.models.front().positions);
+  setFigure(ctx.figures, "fold_repair_seconds", figures.foldRepairSeconds);
   setFigure(ctx.figures, "remesh_level", level);
   setFigure(ctx.figures, "remesh_triangles", static_cast<double>(ctx.remesh.triangles.size()));
-  setFigure(ctx.figures, "remesh_folded_before_repair", repair.foldedBefore);
-  setFigure(ctx.figures, "remesh_folded_after_repair", repair.foldedAfter);
-  return status;
+  setFigure(ctx.figures, "remesh_folded_before_repair", figures.repair.foldedBefore);
+  setFigure(ctx.figures, "remesh_folded_after_repair", figures.repair.foldedAfter);
+  return {};
 }
 
 /// \brief `remesh_distance`: how closely the remeshes of levels 3 to 6
@@ -175,22 +185,17 @@ Status remeshStage(ModelContext& ctx)
 ///        them), and each distance computation is also timed on its own.
 Status remeshDistanceStage(ModelContext& ctx)
 {
-  using Clock = std::chrono::steady_clock;
-  const double diagonal = boundingBoxDiagonal(ctx.surface());
   for (int level = 3; level <= 6; ++level)
   {
-    SemiRegularMesh remesh;
-    std::vector<SurfaceSample> samples;
-    TriangleMesh placed;
-    if (Status status = remeshAt(ctx, ctx.parameterization, level, remesh, samples, placed.points); !status.ok())
+    CollectionRemesh result;
+    RemeshModelReport figures;
+    if (Status status = remeshAt(ctx, ctx.straight.net, ctx.parameterization,
+          remeshOptions(level, /*repairFolds=*/false, /*computeDistance=*/true), result, figures);
+        !status.ok())
       return Status::error("level " + std::to_string(level) + ": " + status.message());
-    placed.triangles = std::move(remesh.triangles);
-    const Clock::time_point start = Clock::now();
-    const SurfaceDistance distance = surfaceDistance(placed, ctx.surface());
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const std::string suffix = "_l" + std::to_string(level);
-    setFigure(ctx.figures, "hausdorff_per_diagonal" + suffix, distance.hausdorff() / diagonal);
-    setFigure(ctx.figures, "distance_seconds" + suffix, seconds);
+    setFigure(ctx.figures, "hausdorff_per_diagonal" + suffix, figures.hausdorffDistanceRelative);
+    setFigure(ctx.figures, "distance_seconds" + suffix, figures.distanceSeconds);
   }
   return {};
 }
@@ -198,8 +203,8 @@ Status remeshDistanceStage(ModelContext& ctx)
 /// \brief `lower_stretch`: the parameterization again with
 ///        `PatchParameterizationOptions::lowerStretch` (Net Straightener's
 ///        LowerStretch). A measurement, not a pipeline step: the stage's
-///        time includes a level-5 remesh, its distance and its fold repair
-///        on the SHREC models; lower_stretch_seconds is the
+///        time includes a level-5 remesh with its distance and one with its
+///        fold repair on the SHREC models; lower_stretch_seconds is the
 ///        parameterization alone.
 Status lowerStretchStage(ModelContext& ctx)
 {
@@ -216,20 +221,21 @@ Status lowerStretchStage(ModelContext& ctx)
   if (isSubdivided(ctx.spec))
     return {};
   constexpr int level = 5;
-  SemiRegularMesh remesh;
-  std::vector<SurfaceSample> samples;
-  TriangleMesh placed;
-  if (Status status = remeshAt(ctx, lowered, level, remesh, samples, placed.points); !status.ok())
+  // The distance as placed (comparable with remesh_distance's), then its
+  // price in folds, before and after the default fold repair.
+  CollectionRemesh result;
+  RemeshModelReport placed, repaired;
+  if (Status status = remeshAt(ctx, ctx.straight.net, lowered,
+        remeshOptions(level, /*repairFolds=*/false, /*computeDistance=*/true), result, placed);
+      !status.ok())
     return status;
-  placed.triangles = remesh.triangles;
-  setFigure(ctx.figures, "lower_stretch_hausdorff_per_diagonal_l5",
-    surfaceDistance(placed, ctx.surface()).hausdorff() / boundingBoxDiagonal(ctx.surface()));
-  // Its price in folds, before and after the default fold repair.
-  FoldRepairReport repair;
-  if (Status status = repairFolds(remesh, ctx.straight.net.mesh, samples, {}, &repair); !status.ok())
+  setFigure(ctx.figures, "lower_stretch_hausdorff_per_diagonal_l5", placed.hausdorffDistanceRelative);
+  if (Status status = remeshAt(ctx, ctx.straight.net, lowered,
+        remeshOptions(level, /*repairFolds=*/true, /*computeDistance=*/false), result, repaired);
+      !status.ok())
     return status;
-  setFigure(ctx.figures, "lower_stretch_folded_before_repair_l5", repair.foldedBefore);
-  setFigure(ctx.figures, "lower_stretch_folded_after_repair_l5", repair.foldedAfter);
+  setFigure(ctx.figures, "lower_stretch_folded_before_repair_l5", repaired.repair.foldedBefore);
+  setFigure(ctx.figures, "lower_stretch_folded_after_repair_l5", repaired.repair.foldedAfter);
   return {};
 }
 
@@ -255,50 +261,39 @@ Status freeCurvesStage(ModelContext& ctx)
   setFigure(ctx.figures, "free_curves_map_distortion_before", report.map.distortionBefore);
   setFigure(ctx.figures, "free_curves_map_distortion_after", report.map.distortionAfter);
   constexpr int level = 5;
-  SemiRegularMesh remesh;
-  std::vector<SurfaceSample> samples;
-  if (Status status = buildSemiRegularMesh(ctx.traceDomain(), level, remesh); !status.ok())
+  CollectionRemesh result;
+  RemeshModelReport figures;
+  if (Status status = remeshAt(
+        ctx, moved.net, map, remeshOptions(level, /*repairFolds=*/true, /*computeDistance=*/true), result, figures);
+      !status.ok())
     return status;
-  if (Status status = placeOnSurface(remesh, moved.net, ctx.traceDomain(), map, samples); !status.ok())
-    return status;
-  FoldRepairReport repair;
-  if (Status status = repairFolds(remesh, moved.net.mesh, samples, {}, &repair); !status.ok())
-    return status;
-  const TriangleMesh placed{ samplePositions(moved.net, samples), remesh.triangles };
-  setFigure(ctx.figures, "free_curves_hausdorff_per_diagonal_l5",
-    surfaceDistance(placed, ctx.surface()).hausdorff() / boundingBoxDiagonal(ctx.surface()));
-  setFigure(ctx.figures, "free_curves_folded_after_repair_l5", repair.foldedAfter);
+  setFigure(ctx.figures, "free_curves_hausdorff_per_diagonal_l5", figures.hausdorffDistanceRelative);
+  setFigure(ctx.figures, "free_curves_folded_after_repair_l5", figures.repair.foldedAfter);
   return {};
 }
 
 /// \brief `sample_relaxation`: the Semi-Regular Remesher's sample
 ///        relaxation (4 rounds, the model alone) on the remesh of
 ///        `remeshLevel()`. A measurement: the stage's time includes indexing
-///        the parameterization, the remesh and, on the SHREC models, the
-///        remesh's distance; sample_relaxation_seconds is the relaxation
-///        alone.
+///        the parameterization, the remesh, its placement and, on the SHREC
+///        models, the remesh's distance; sample_relaxation_seconds is the
+///        relaxation alone.
 Status sampleRelaxationStage(ModelContext& ctx)
 {
-  using Clock = std::chrono::steady_clock;
-  ParameterizedSurface surface;
-  if (Status status = surface.build(ctx.straight.net, ctx.traceDomain(), ctx.parameterization); !status.ok())
-    return status;
   const int level = remeshLevel(ctx.spec);
-  SemiRegularMesh remesh;
-  if (Status status = buildSemiRegularMesh(ctx.traceDomain(), level, remesh); !status.ok())
+  RemeshOptions options = remeshOptions(level, /*repairFolds=*/false, /*computeDistance=*/!isSubdivided(ctx.spec));
+  options.sampleRelaxationIterations = SampleRelaxationOptions{}.iterations;
+  CollectionRemesh result;
+  RemeshModelReport figures;
+  RemeshReport report;
+  if (Status status = remeshAt(ctx, ctx.straight.net, ctx.parameterization, options, result, figures, &report);
+      !status.ok())
     return status;
-  const Clock::time_point start = Clock::now();
-  if (Status status = relaxSampleLocations(ctx.traceDomain(), { &surface }, remesh); !status.ok())
-    return status;
-  setFigure(ctx.figures, "sample_relaxation_seconds", std::chrono::duration<double>(Clock::now() - start).count());
+  setFigure(ctx.figures, "sample_relaxation_seconds", report.sampleRelaxationSeconds);
   if (isSubdivided(ctx.spec))
     return {};
-  std::vector<SurfaceSample> samples;
-  if (Status status = placeOnSurface(remesh, surface, samples); !status.ok())
-    return status;
-  const TriangleMesh placed{ samplePositions(ctx.straight.net, samples), remesh.triangles };
   setFigure(ctx.figures, "sample_relaxation_hausdorff_per_diagonal_l" + std::to_string(level),
-    surfaceDistance(placed, ctx.surface()).hausdorff() / boundingBoxDiagonal(ctx.surface()));
+    figures.hausdorffDistanceRelative);
   return {};
 }
 
@@ -314,17 +309,18 @@ Status waveletStage(ModelContext& ctx)
 {
   using Clock = std::chrono::steady_clock;
   constexpr int level = 6;
-  SemiRegularMesh remesh;
-  std::vector<SurfaceSample> samples;
-  std::vector<Vec3> points;
+  CollectionRemesh result;
+  RemeshModelReport figures;
   const bool reuse = ctx.remesh.level == level && !ctx.remeshPoints.empty();
   if (!reuse)
   {
-    if (Status status = remeshAt(ctx, ctx.parameterization, level, remesh, samples, points); !status.ok())
+    if (Status status = remeshAt(ctx, ctx.straight.net, ctx.parameterization,
+          remeshOptions(level, /*repairFolds=*/false, /*computeDistance=*/false), result, figures);
+        !status.ok())
       return status;
   }
-  const SemiRegularMesh& mesh = reuse ? ctx.remesh : remesh;
-  const std::vector<Vec3>& positions = reuse ? ctx.remeshPoints : points;
+  const SemiRegularMesh& mesh = reuse ? ctx.remesh : result.mesh;
+  const std::vector<Vec3>& positions = reuse ? ctx.remeshPoints : result.models.front().positions;
   Eigen::MatrixXd values(positions.size(), 3);
   for (std::size_t v = 0; v < positions.size(); ++v)
     values.row(static_cast<Eigen::Index>(v)) = positions[v].transpose();

@@ -61,7 +61,7 @@ Eigen::MatrixXd textbookLoop(const SemiRegularMesh& coarse, const SemiRegularMes
   for (int v = 0; v < evenCount; ++v)
   {
     const int n = static_cast<int>(neighbours[v].size());
-    const double c = 3.0 / 8.0 + std::cos(2.0 * M_PI / n) / 4.0;
+    const double c = 3.0 / 8.0 + std::cos(2.0 * kPi / n) / 4.0;
     const double beta = (5.0 / 8.0 - c * c) / n;
     y.row(v) = (1.0 - n * beta) * x.row(v);
     for (int u : neighbours[v])

@@ -1,6 +1,7 @@
 #include <cmp/basedomain/BaseDomainBuilder.h>
 #include <cmp/io/MeshFile.h>
 #include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/remesh/Remesh.h>
 #include <cmp/mesh/SurfaceCheck.h>
 #include <cmp/mesh/SurfaceDistance.h>
 #include "TestMeshes.h"
@@ -272,17 +273,25 @@ TEST(SemiRegularRemesher, AdaptiveRemeshWithLowerStretchIsWithinOnePercentOfEver
   const Status status = indexRealModels(names, domain, true, indexed);
   ASSERT_TRUE(status.ok()) << status.message();
   const auto& [models, parameterized, surfaces, collection] = indexed;
-  SemiRegularMesh adaptive, uniform;
-  ASSERT_TRUE(buildAdaptiveSemiRegularMesh(domain, 8, flatnessSplitRule(collection, 0.005), adaptive).ok());
+  // The whole remesh stage, as the filter runs it (without fold repair).
+  std::vector<RemeshModel> given;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    given.push_back({ &models[i].data.mesh, &surfaces[i] });
+  RemeshOptions options;
+  options.level = 8;
+  options.adaptiveTolerance = 0.005;
+  options.repairFolds = false;
+  CollectionRemesh remeshed;
+  RemeshReport report;
+  const Status remeshing = remesh(domain, given, remeshed, options, &report);
+  ASSERT_TRUE(remeshing.ok()) << remeshing.message();
+  const SemiRegularMesh& adaptive = remeshed.mesh;
+  SemiRegularMesh uniform;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, uniform).ok());
   EXPECT_LT(adaptive.triangles.size(), 0.3 * uniform.triangles.size());
   for (std::size_t i = 0; i < names.size(); ++i)
   {
-    std::vector<SurfaceSample> samples;
-    ASSERT_TRUE(placeOnSurface(adaptive, surfaces[i], samples).ok());
-    const TriangleMesh mesh = remeshSurface(adaptive, samplePositions(parameterized[i].net, samples));
-    const double hausdorff =
-      surfaceDistance(mesh, models[i].data.mesh).hausdorff() / boundingBoxDiagonal(models[i].data.mesh);
+    const double hausdorff = report.models[i].hausdorffDistanceRelative;
     EXPECT_LT(hausdorff, 0.01) << names[i];
     std::cout << names[i] << ": LowerStretch, adaptive to 0.005 up to level 8: " << adaptive.triangles.size()
               << " triangles (uniform level 5: " << uniform.triangles.size() << "), Hausdorff distance " << hausdorff

@@ -19,7 +19,7 @@ TriangleMesh torus(int n, int m)
   {
     for (int j = 0; j < m; ++j)
     {
-      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
+      const double u = 2 * kPi * i / n, v = 2 * kPi * j / m;
       mesh.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
     }
   }
@@ -39,7 +39,7 @@ TriangleMesh torus(int n, int m)
 std::vector<Vec3> smoothField(const std::vector<Vec3>& points, double amplitude, unsigned seed)
 {
   std::mt19937 random(seed);
-  std::uniform_real_distribution<double> frequency(0.5, 3.0), phase(0.0, 2.0 * M_PI), direction(-1.0, 1.0);
+  std::uniform_real_distribution<double> frequency(0.5, 3.0), phase(0.0, 2.0 * kPi), direction(-1.0, 1.0);
   const Vec3 k1(frequency(random), frequency(random), frequency(random));
   const Vec3 k2(frequency(random), frequency(random), frequency(random));
   const Vec3 phases(phase(random), phase(random), phase(random));

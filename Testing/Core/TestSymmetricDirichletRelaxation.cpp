@@ -86,10 +86,10 @@ Finger crushedFinger(double length, double push)
   const double tubeEnd = imageRadius.back();
   for (int k = 1; k < perUnit; ++k)
   {
-    const double polar = 0.5 * M_PI * k / perUnit;
+    const double polar = 0.5 * kPi * k / perUnit;
     height.push_back(length + std::sin(polar));
     radius.push_back(std::cos(polar));
-    imageRadius.push_back(tubeEnd * std::tan(0.25 * M_PI - 0.5 * polar));
+    imageRadius.push_back(tubeEnd * std::tan(0.25 * kPi - 0.5 * polar));
   }
   Finger finger;
   const int rings = static_cast<int>(height.size());
@@ -98,7 +98,7 @@ Finger crushedFinger(double length, double push)
   for (int k = 0; k < rings; ++k)
     for (int j = 0; j < around; ++j)
     {
-      const double angle = 2.0 * M_PI * (j + 0.5 * (k % 2)) / around; // odd rings turned half a step
+      const double angle = 2.0 * kPi * (j + 0.5 * (k % 2)) / around; // odd rings turned half a step
       finger.surface.points.emplace_back(radius[k] * std::cos(angle), radius[k] * std::sin(angle), height[k]);
       image.push_back(std::polar(imageRadius[k], angle));
     }

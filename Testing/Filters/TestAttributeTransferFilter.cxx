@@ -1,4 +1,5 @@
 #include "FilterTestUtilities.h"
+#include <cmp/mesh/TriangleMesh.h> // cmp::kPi
 #include "vtkCMPAttributeTransfer.h"
 #include "vtkCMPSemiRegularRemesher.h"
 
@@ -54,7 +55,7 @@ void addSeamedTextureCoordinates(vtkPolyData* surface)
     for (int k = 0; k < 3; ++k)
     {
       const double* p = surface->GetPoint(ids->GetId(k));
-      u[k] = (std::atan2(p[1], p[0]) + M_PI) / (2 * M_PI);
+      u[k] = (std::atan2(p[1], p[0]) + cmp::kPi) / (2 * cmp::kPi);
     }
     const double high = std::max({ u[0], u[1], u[2] });
     for (int k = 0; k < 3; ++k)

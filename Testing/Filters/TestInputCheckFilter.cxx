@@ -1,4 +1,5 @@
 #include "FilterTestUtilities.h"
+#include <cmp/mesh/TriangleMesh.h> // cmp::kPi
 #include "vtkCMPInputCheck.h"
 #include "vtkCMPSurfaceReader.h"
 
@@ -39,7 +40,7 @@ std::string torusOFF(int n, int m)
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < m; ++j)
     {
-      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
+      const double u = 2 * cmp::kPi * i / n, v = 2 * cmp::kPi * j / m;
       out << (2 + std::cos(v)) * std::cos(u) << " " << (2 + std::cos(v)) * std::sin(u) << " " << std::sin(v) << "\n";
     }
   for (int i = 0; i < n; ++i)

@@ -192,6 +192,11 @@ TEST_F(DetailTransferOnExamples, ReportsBadInput)
     [](vtkCMPWaveletDetailTransfer* f) { f->SetDetailWeights({ 0, 1, std::nan(""), 1 }); });
   expectError(remeshes_, "LastCoarseLevel 4 is above the remesh's finest level 3",
     [](vtkCMPWaveletDetailTransfer* f) { f->SetLastCoarseLevel(4); });
+  // Out of the remesh levels: refused, not clamped.
+  expectError(remeshes_, "LastCoarseLevel must be between 0 and 8 (it is -1)",
+    [](vtkCMPWaveletDetailTransfer* f) { f->SetLastCoarseLevel(-1); });
+  expectError(remeshes_, "LastCoarseLevel must be between 0 and 8 (it is 9)",
+    [](vtkCMPWaveletDetailTransfer* f) { f->SetLastCoarseLevel(9); });
 
   vtkSmartPointer<vtkMultiBlockDataSet> adaptive = remesh(models_, l0_, 3, 0.02);
   ASSERT_LT(block(adaptive, 0)->GetNumberOfCells(), block(remeshes_, 0)->GetNumberOfCells()) << "not adaptive";

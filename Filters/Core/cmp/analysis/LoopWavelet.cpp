@@ -71,8 +71,6 @@ namespace cmp
 namespace
 {
 
-constexpr double pi = 3.14159265358979323846;
-
 /// Row-major storage keeps the few columns of one vertex together in the
 /// sparse products of the update.
 using RowMajorSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
@@ -85,7 +83,7 @@ constexpr double updateTolerance = 1e-3;
 /// Loop's weight of each neighbour in the even rule.
 double loopBeta(int valence)
 {
-  const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * pi / valence);
+  const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * kPi / valence);
   return (5.0 / 8.0 - c * c) / valence;
 }
 

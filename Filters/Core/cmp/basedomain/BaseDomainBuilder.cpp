@@ -1,6 +1,7 @@
 #include <cmp/basedomain/BaseDomainBuilder.h>
 
 #include <cmp/mesh/SurfaceCheck.h>
+#include <cmp/mesh/TriangleShape.h>
 
 #include <Eigen/Geometry>
 
@@ -11,14 +12,6 @@
 
 namespace cmp
 {
-
-double triangleShapeQuality(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  const double squaredEdges = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
-  if (squaredEdges <= 0.0)
-    return 0.0;
-  return 2.0 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / squaredEdges;
-}
 
 namespace
 {
@@ -382,20 +375,9 @@ private:
 
 void measureQuality(const BaseDomain& domain, BaseDomainBuilderReport& report)
 {
-  double minAngle = kInfinity, qualitySum = 0.0;
-  const TriangleMesh& mesh = domain.mesh;
-  for (const Triangle& tri : mesh.triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Vec3 e1 = mesh.points[tri[(k + 1) % 3]] - mesh.points[tri[k]];
-      const Vec3 e2 = mesh.points[tri[(k + 2) % 3]] - mesh.points[tri[k]];
-      minAngle = std::min(minAngle, std::atan2(e1.cross(e2).norm(), e1.dot(e2)));
-    }
-    qualitySum += triangleShapeQuality(mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]);
-  }
-  report.minAngleDegrees = minAngle * 180.0 / M_PI;
-  report.meanShapeQuality = qualitySum / std::max(1, mesh.triangleCount());
+  const TriangleShapeSummary shape = measureTriangleShapes(domain.mesh.points, domain.mesh.triangles);
+  report.minAngleDegrees = shape.minimumAngleDegrees;
+  report.meanShapeQuality = shape.meanShapeQuality;
 }
 
 } // namespace

@@ -47,8 +47,4 @@ struct BaseDomainBuilderReport
 Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmarks, BaseDomain& domain,
   const BaseDomainBuilderOptions& options = {}, BaseDomainBuilderReport* report = nullptr);
 
-/// \brief Shape quality of a triangle: 4*sqrt(3)*area / sum of squared edge
-///        lengths; 1 for equilateral, 0 for degenerate.
-double triangleShapeQuality(const Vec3& a, const Vec3& b, const Vec3& c);
-
 } // namespace cmp

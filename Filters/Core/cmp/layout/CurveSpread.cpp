@@ -10,8 +10,6 @@ namespace cmp
 namespace
 {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// The area-weighted normal of the triangles around mesh vertex `v`.
 Vec3 vertexNormal(const EditableMesh& mesh, int v)
 {

@@ -104,6 +104,12 @@ BaseTriangles toBaseTriangles(const BaseDomain& domain)
   return base;
 }
 
+std::string layoutProblem(const LabelledSurface& surface, const BaseDomain& domain)
+{
+  const std::vector<std::string> problems = validateLayout(surface, toBaseTriangles(domain));
+  return problems.empty() ? "" : problems.front();
+}
+
 std::vector<std::string> validateLayout(const LabelledSurface& surface, const BaseTriangles& base)
 {
   std::vector<std::string> problems;

@@ -40,6 +40,10 @@ BaseTriangles toBaseTriangles(const BaseDomain& domain);
 ///        shared landmarks. Empty when the layout is valid.
 std::vector<std::string> validateLayout(const LabelledSurface& surface, const BaseTriangles& base);
 
+/// \brief The first problem `validateLayout()` finds in `surface` as a
+///        layout of `domain`, "" when it is one: what a filter reports.
+std::string layoutProblem(const LabelledSurface& surface, const BaseDomain& domain);
+
 /// \brief Total area of the surface's triangles.
 double totalArea(const LabelledSurface& surface);
 

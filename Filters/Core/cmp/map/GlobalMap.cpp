@@ -19,7 +19,6 @@ namespace
 {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 /// Tries of one star solve, each holding more vertices, before it is skipped.
 constexpr int kStarAttempts = 3;
 /// Halvings of a vertex's step at most before it stays.

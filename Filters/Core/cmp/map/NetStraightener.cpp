@@ -1,6 +1,7 @@
 #include <cmp/map/NetStraightener.h>
 
 #include <cmp/map/PatchParameterization.h>
+#include <cmp/mesh/TriangleShape.h>
 #include <cmp/numerics/MeanValueSystem.h>
 
 #include <Eigen/Geometry>
@@ -70,14 +71,6 @@ bool supportedBy(const SurfacePoint& inner, const SurfacePoint& outer)
     if (v >= 0 && std::find(outer.vertex.begin(), outer.vertex.end(), v) == outer.vertex.end())
       return false;
   return true;
-}
-
-/// 4 sqrt(3) area / sum of squared edge lengths: 1 for an equilateral
-/// triangle, 0 for a degenerate one.
-double shapeQuality(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  const double squares = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
-  return squares > 0.0 ? 2.0 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / squares : 0.0;
 }
 
 /// One straight-line walk event: through an existing vertex, or across the
@@ -905,7 +898,7 @@ private:
           quality = 0.0;
           break;
         }
-        quality = std::min(quality, shapeQuality(mesh.point(x), mesh.point(p), mesh.point(q)));
+        quality = std::min(quality, triangleShapeQuality(mesh.point(x), mesh.point(p), mesh.point(q)));
       }
       if (quality > bestQuality)
       {

@@ -11,6 +11,9 @@
 namespace cmp
 {
 
+/// \brief pi, for every angle the core computes (`M_PI` is not standard C++).
+constexpr double kPi = 3.14159265358979323846;
+
 /// \brief A 3D point or vector.
 using Vec3 = Eigen::Vector3d;
 

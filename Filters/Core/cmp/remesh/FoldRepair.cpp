@@ -1,6 +1,7 @@
 #include <cmp/remesh/FoldRepair.h>
 
 #include <cmp/mesh/SurfaceWalk.h>
+#include <cmp/mesh/TriangleShape.h>
 
 #include <Eigen/Geometry>
 
@@ -42,12 +43,7 @@ constexpr int kMostRegionWidening = 64;
 /// corners are landmarks, which record no surface normal).
 double signedQuality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& under)
 {
-  if (under.isZero())
-    return 1.0;
-  const double squaredSides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
-  if (!(squaredSides > 0.0))
-    return 0.0;
-  return 2.0 * std::sqrt(3.0) * (b - a).cross(c - a).dot(under.normalized()) / squaredSides;
+  return under.isZero() ? 1.0 : signedTriangleShapeQuality(a, b, c, under.normalized());
 }
 
 /// Gradient of signedQuality(a, b, c, under) with respect to `a`, `under`
@@ -308,7 +304,7 @@ bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
   for (double fraction : kStepFractions)
     for (int k = 0; k < kDirections; ++k)
     {
-      const double angle = 2.0 * M_PI * k / kDirections;
+      const double angle = 2.0 * kPi * k / kDirections;
       const TrianglePoint tried =
         walkOnSurface(surface, start, fraction * shortest * (std::cos(angle) * first + std::sin(angle) * second));
       mesh.moveTo(v, tried);

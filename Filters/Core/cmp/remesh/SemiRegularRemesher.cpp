@@ -110,6 +110,12 @@ std::string remeshLevelProblem(int level)
   return "level " + std::to_string(level) + " is out of range (0 to " + std::to_string(kMaximumRemeshLevel) + ")";
 }
 
+std::string remeshLevelProblem(const std::string& property, int level)
+{
+  return property + " must be between 0 and " + std::to_string(kMaximumRemeshLevel) + " (it is " +
+    std::to_string(level) + ")";
+}
+
 Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out)
 {
   if (!isRemeshLevel(level))

@@ -70,6 +70,12 @@ constexpr bool isRemeshLevel(int level) { return level >= 0 && level <= kMaximum
 /// \brief Why `level` is not one, in the words every stage uses.
 std::string remeshLevelProblem(int level);
 
+/// \brief Why the user's setting `property` (a filter property such as
+///        `Level`) is not a remesh level: "PROPERTY must be between 0 and
+///        8 (it is N)". Levels out of range are refused with this message,
+///        never clamped.
+std::string remeshLevelProblem(const std::string& property, int level);
+
 /// \brief Builds the connectivity of `domain` refined `level` times (0 to
 ///        `kMaximumRemeshLevel`).
 ///        Depends only on the base domain and the level.
@@ -128,6 +134,9 @@ public:
 
   /// \brief True once `build()` succeeded.
   bool built() const { return index_ != nullptr; }
+
+  /// \brief The layout it was built on. \pre `built()`.
+  const TracedNet& net() const { return *net_; }
 
   /// \brief Calls `visit(patch, image, area)` for every surface triangle:
   ///        its patch, its image's corners in barycentric coordinates

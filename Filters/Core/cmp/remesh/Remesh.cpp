@@ -1,0 +1,211 @@
+#include <cmp/remesh/Remesh.h>
+
+#include <cmp/mesh/SurfaceDistance.h>
+#include <cmp/mesh/TriangleShape.h>
+#include <cmp/remesh/SampleRelaxation.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace cmp
+{
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// The base vertex whose landmark lies nearest to `point` (straight-line
+/// distance in `distance`), -1 if the net has none.
+int nearestLandmark(const TracedNet& net, const Vec3& point, double& distance)
+{
+  int nearest = -1;
+  distance = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < net.landmarkVertex.size(); ++b)
+  {
+    if (net.landmarkVertex[b] < 0)
+      continue;
+    const double d = (net.mesh.point(net.landmarkVertex[b]) - point).norm();
+    if (d < distance)
+    {
+      distance = d;
+      nearest = static_cast<int>(b);
+    }
+  }
+  return nearest;
+}
+
+/// Sampled both ways: input to remesh catches features the remesh cuts
+/// off, remesh to input catches triangles spanning concave regions.
+void measureDistance(const BaseDomain& domain, const RemeshModel& model, const RemeshedModel& placed,
+  const SemiRegularMesh& mesh, RemeshModelReport& figures)
+{
+  const Clock::time_point start = Clock::now();
+  const SurfaceDistance distance = surfaceDistance(*model.surface, TriangleMesh{ placed.positions, mesh.triangles });
+  const double diagonal = boundingBoxDiagonal(*model.surface);
+  figures.distanceMeasured = true;
+  figures.hausdorffDistance = distance.hausdorff();
+  figures.hausdorffDistanceRelative = diagonal > 0.0 ? figures.hausdorffDistance / diagonal : 0.0;
+  figures.meanDistance = 0.5 * (distance.meanAToB + distance.meanBToA);
+  // Where the Hausdorff distance is reached, and the landmark nearest to
+  // it: a part without a landmark that the remesh misses (a tail's tip)
+  // shows up here, and a landmark there is the cure.
+  figures.hausdorffPoint = distance.farthestPoint();
+  figures.hausdorffPointOnInput = distance.reachedOnA();
+  double landmarkDistance = 0.0;
+  const int base = nearestLandmark(model.map->net(), figures.hausdorffPoint, landmarkDistance);
+  figures.hausdorffNearestFeature = base >= 0 ? domain.featureIds[base] : -1;
+  figures.hausdorffFeatureDistanceRelative = base >= 0 && diagonal > 0.0 ? landmarkDistance / diagonal : 0.0;
+  figures.distanceSeconds = secondsSince(start);
+}
+
+/// The shared connectivity on one model: placed, repaired, measured.
+Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const std::vector<int>& nearestLandmarks,
+  const RemeshModel& model, const RemeshOptions& options, RemeshedModel& placed, RemeshModelReport& figures)
+{
+  const Clock::time_point start = Clock::now();
+  const TracedNet& net = model.map->net();
+  if (Status status = placeOnSurface(mesh, *model.map, placed.samples); !status.ok())
+    return Status::error(
+      "cannot place the remesh on the model (its parameterization does not fit its layout): " + status.message());
+  if (options.repairFolds)
+  {
+    const Clock::time_point repairStart = Clock::now();
+    if (Status status = repairFolds(mesh, net.mesh, placed.samples, options.foldRepair, &figures.repair);
+        !status.ok())
+      return status;
+    figures.foldRepairSeconds = secondsSince(repairStart);
+  }
+  placed.positions = samplePositions(net, placed.samples);
+  figures.placementSeconds = secondsSince(start);
+
+  placed.folded = foldedTriangles(mesh, net.mesh, placed.samples);
+  figures.foldedAfterRepair = static_cast<int>(std::count(placed.folded.begin(), placed.folded.end(), 1));
+  figures.foldedBeforeRepair = options.repairFolds ? figures.repair.foldedBefore : figures.foldedAfterRepair;
+  const TriangleShapeSummary shape = measureTriangleShapes(placed.positions, mesh.triangles);
+  figures.minimumAngleDegrees = shape.minimumAngleDegrees;
+  figures.meanShapeQuality = shape.meanShapeQuality;
+  placed.foldsNearFeature =
+    foldsNearLandmarks(nearestLandmarks, static_cast<int>(domain.featureIds.size()), placed.folded);
+  if (options.computeDistance)
+    measureDistance(domain, model, placed, mesh, figures);
+  figures.seconds = secondsSince(start);
+  return {};
+}
+
+} // namespace
+
+Status checkRemeshOptions(const RemeshOptions& options)
+{
+  if (!isRemeshLevel(options.level))
+    return Status::error(remeshLevelProblem("Level", options.level));
+  if (!(options.adaptiveTolerance >= 0.0) || !std::isfinite(options.adaptiveTolerance))
+  {
+    std::ostringstream message;
+    message << "AdaptiveTolerance must be 0 (uniform) or a positive fraction of the bounding-box diagonal (it is "
+            << options.adaptiveTolerance << ")";
+    return Status::error(message.str());
+  }
+  if (options.sampleRelaxationIterations < 0)
+    return Status::error("SampleRelaxationIterations must be 0 (none) or a positive number of rounds (it is " +
+      std::to_string(options.sampleRelaxationIterations) + ")");
+  return {};
+}
+
+Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localModels, Communicator& communicator,
+  CollectionRemesh& out, const RemeshOptions& options, RemeshReport* report)
+{
+  if (report)
+    *report = RemeshReport{};
+  RemeshReport local;
+  local.models.resize(localModels.size());
+  CollectionRemesh result;
+  Status status = checkRemeshOptions(options);
+  std::vector<const ParameterizedSurface*> surfaces;
+  for (std::size_t m = 0; m < localModels.size() && status.ok(); ++m)
+  {
+    const RemeshModel& model = localModels[m];
+    if (!model.surface || !model.map)
+      status = Status::error("model " + std::to_string(m) + " is missing");
+    else if (!model.map->built())
+      status = Status::error("model " + std::to_string(m) + " is not parameterized (its map was not built)");
+    else
+      surfaces.push_back(model.map);
+  }
+
+  // One connectivity for the whole collection: with a tolerance, a
+  // triangle is split when any model needs it.
+  if (status.ok())
+    status = options.adaptiveTolerance > 0.0
+      ? buildAdaptiveSemiRegularMesh(
+          domain, options.level, flatnessSplitRule(surfaces, options.adaptiveTolerance), result.mesh)
+      : buildSemiRegularMesh(domain, options.level, result.mesh);
+  const bool relax = options.sampleRelaxationIterations > 0;
+  if (relax)
+    status = agreeOnStatus(status, communicator);
+  if (!status.ok())
+    return status;
+  if (relax)
+  {
+    const Clock::time_point start = Clock::now();
+    SampleRelaxationOptions relaxation;
+    relaxation.iterations = options.sampleRelaxationIterations;
+    SampleRelaxationReport relaxed;
+    if (Status s = relaxSampleLocations(domain, surfaces, communicator, result.mesh, relaxation, &relaxed); !s.ok())
+      return Status::error("sample relaxation: " + s.message());
+    local.sampleRelaxationRounds = relaxed.iterations;
+    local.sampleRelaxationSeconds = secondsSince(start);
+  }
+
+  const std::vector<int> nearestLandmarks = nearestLandmarkOfTriangles(result.mesh, domain.mesh.vertexCount());
+  result.models.resize(localModels.size());
+  const double modelCount = std::max<double>(1.0, static_cast<double>(localModels.size()));
+  for (std::size_t m = 0; m < localModels.size(); ++m)
+  {
+    if (Status s = placeModel(domain, result.mesh, nearestLandmarks, localModels[m], options, result.models[m],
+          local.models[m]);
+        !s.ok())
+    {
+      if (report)
+      {
+        *report = std::move(local);
+        report->failedModel = static_cast<int>(m);
+      }
+      return s;
+    }
+    if (options.progress)
+      options.progress((m + 1) / modelCount);
+  }
+  out = std::move(result);
+  if (report)
+    *report = std::move(local);
+  return {};
+}
+
+Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& models, CollectionRemesh& out,
+  const RemeshOptions& options, RemeshReport* report)
+{
+  SingleProcess alone;
+  return remesh(domain, models, alone, out, options, report);
+}
+
+Status remesh(const TriangleMesh& surface, const TracedNet& net, const BaseDomain& domain,
+  const PatchParameterization& parameterization, CollectionRemesh& out, const RemeshOptions& options,
+  RemeshReport* report)
+{
+  ParameterizedSurface map;
+  if (Status status = map.build(net, domain, parameterization); !status.ok())
+    return status;
+  return remesh(domain, { RemeshModel{ &surface, &map } }, out, options, report);
+}
+
+} // namespace cmp

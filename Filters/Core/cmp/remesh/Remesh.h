@@ -1,0 +1,159 @@
+#pragma once
+/// \file Remesh.h
+/// \brief The remesh stage in one call (paper Section 2): one semi-regular
+///        connectivity for a collection of parameterized models, placed on
+///        each of them, with its folds repaired and its shape and distance
+///        to each model measured.
+///
+/// `remesh()` does the whole stage: build the connectivity (uniform, or
+/// adaptive over every model), relax its samples over every model, place it
+/// on each model, repair folds, and measure quality and distance. Its parts
+/// (`buildSemiRegularMesh()`, `relaxSampleLocations()`, `placeOnSurface()`,
+/// `repairFolds()`, ...) stay available for a caller who needs one alone.
+
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/layout/PatchLayout.h>
+#include <cmp/map/PatchParameterization.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+#include <cmp/numerics/Communicator.h>
+#include <cmp/remesh/FoldRepair.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+
+#include <functional>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief What `remesh()` builds and measures.
+struct RemeshOptions
+{
+  /// \brief Quadrisections of L0, 0 to `kMaximumRemeshLevel`; with
+  ///        `adaptiveTolerance`, the maximum level.
+  int level = 4;
+  /// \brief 0: uniform refinement. t > 0: adaptive, a triangle is split
+  ///        while on any model the surface at one of its edge midpoints or
+  ///        its centroid is farther than t times that model's bounding-box
+  ///        diagonal from the flat triangle (`flatnessSplitRule()`).
+  double adaptiveTolerance = 0.0;
+  /// \brief Rounds of `relaxSampleLocations()` over every model (0: none;
+  ///        its other options at their defaults).
+  int sampleRelaxationIterations = 0;
+  /// \brief Unfold triangles that face against their model
+  ///        (`repairFolds()` with `foldRepair`).
+  bool repairFolds = true;
+  /// \brief The fold repair's own options.
+  FoldRepairOptions foldRepair;
+  /// \brief Measure each remesh's sampled two-sided distance to its model.
+  bool computeDistance = true;
+  /// \brief Called with the fraction (0 to 1) of the models placed, if set.
+  std::function<void(double)> progress;
+};
+
+/// \brief Checks the options `remesh()` checks first. The messages name the
+///        options as the Semi-Regular Remesher's properties do (`Level`,
+///        `AdaptiveTolerance`, `SampleRelaxationIterations`), so that a
+///        filter can pass them on as they are.
+Status checkRemeshOptions(const RemeshOptions& options);
+
+/// \brief One model to remesh.
+struct RemeshModel
+{
+  /// \brief The model's surface as given: distances are measured to it.
+  const TriangleMesh* surface = nullptr;
+  /// \brief Its layout and parameterization, indexed (built on the layout
+  ///        of `surface`, over the domain given to `remesh()`).
+  const ParameterizedSurface* map = nullptr;
+};
+
+/// \brief The shared remesh placed on one model.
+struct RemeshedModel
+{
+  std::vector<SurfaceSample> samples; ///< Where each remesh vertex lies on the model's layout.
+  std::vector<Vec3> positions;        ///< Their positions.
+  std::vector<char> folded;           ///< Per triangle: 1 if it faces against the model (after repair).
+  /// \brief Per landmark (FeatureId order), the folded triangles nearest to
+  ///        it in remesh edges (`foldsNearLandmarks()`): which landmark to
+  ///        move, or to add one beside.
+  std::vector<int> foldsNearFeature;
+};
+
+/// \brief What `remesh()` makes: one connectivity, placed on every model.
+struct CollectionRemesh
+{
+  SemiRegularMesh mesh;               ///< The connectivity and base locations shared by every model.
+  std::vector<RemeshedModel> models;  ///< Per model, in the order given.
+};
+
+/// \brief What `remesh()` measured on one model.
+struct RemeshModelReport
+{
+  int foldedBeforeRepair = 0;     ///< Folded triangles before repair (`foldedAfterRepair` without repair).
+  int foldedAfterRepair = 0;      ///< Folded triangles left, the ones `RemeshedModel::folded` marks.
+  FoldRepairReport repair;        ///< The fold repair's own report (zero without repair).
+  double minimumAngleDegrees = 0.0; ///< Smallest corner angle of the placed remesh.
+  double meanShapeQuality = 0.0;  ///< Mean `triangleShapeQuality()` of the placed remesh.
+  bool distanceMeasured = false;  ///< Whether the figures below were measured (`computeDistance`).
+  double hausdorffDistance = 0.0; ///< Sampled two-sided Hausdorff distance to the model.
+  double hausdorffDistanceRelative = 0.0; ///< The same over the model's bounding-box diagonal (0 if it is 0).
+  double meanDistance = 0.0;      ///< Mean of the two one-sided mean distances.
+  Vec3 hausdorffPoint = Vec3::Zero(); ///< Where the Hausdorff distance is reached.
+  bool hausdorffPointOnInput = false; ///< Whether that point is on the model (a part the remesh misses).
+  /// \brief The landmark (FeatureId) nearest to `hausdorffPoint` in
+  ///        straight-line distance, -1 if the layout has none: a part the
+  ///        remesh misses (a tail's tip) wants a landmark there.
+  int hausdorffNearestFeature = -1;
+  double hausdorffFeatureDistanceRelative = 0.0; ///< Its distance over the diagonal.
+  double placementSeconds = 0.0;  ///< Placement, fold repair and positions.
+  double foldRepairSeconds = 0.0; ///< The fold repair alone.
+  double distanceSeconds = 0.0;   ///< The distance alone.
+  double seconds = 0.0;           ///< All of this model's work.
+};
+
+/// \brief What `remesh()` did.
+struct RemeshReport
+{
+  int sampleRelaxationRounds = 0;       ///< Rounds of sample relaxation made.
+  double sampleRelaxationSeconds = 0.0; ///< Their time (the whole collection's).
+  /// \brief The model whose placement or fold repair failed, -1 if none
+  ///        did (the message then is that model's).
+  int failedModel = -1;
+  std::vector<RemeshModelReport> models; ///< Per model, in the order given.
+};
+
+/// \brief Remeshes a collection with one connectivity (paper Section 2):
+///        `domain` refined `options.level` times (uniformly, or adaptively
+///        where any model needs it), its samples relaxed over every model,
+///        then placed on each model through its parameterization, folds
+///        repaired, shape and distance measured.
+///
+/// \pre `domain` is the L0 every model was parameterized over; each model's
+///      `map` was built on the layout of its `surface` over `domain`.
+///
+/// The models may be spread over the processes of `communicator`, each
+/// passing its own (possibly none) and the same options: with sample
+/// relaxation the call is collective, and a process that fails before the
+/// relaxation (options, a missing model, adaptive refinement) makes every
+/// process fail with its message, so that none waits for the others.
+/// Without relaxation no process waits for another.
+///
+/// Fails, naming the problem, on options out of range
+/// (`checkRemeshOptions()`), a model that is missing or not built, and
+/// when a model's placement or fold repair fails (`report->failedModel`
+/// says which). `out` is complete only on success.
+Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localModels, Communicator& communicator,
+  CollectionRemesh& out, const RemeshOptions& options = {}, RemeshReport* report = nullptr);
+
+/// \brief `remesh()` for a collection held by one process.
+Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& models, CollectionRemesh& out,
+  const RemeshOptions& options = {}, RemeshReport* report = nullptr);
+
+/// \brief `remesh()` for one model given by its layout `net` (the
+///        straightener's) and `parameterization` (the per-patch map's);
+///        `surface` is the model as given, for the distances.
+Status remesh(const TriangleMesh& surface, const TracedNet& net, const BaseDomain& domain,
+  const PatchParameterization& parameterization, CollectionRemesh& out, const RemeshOptions& options = {},
+  RemeshReport* report = nullptr);
+
+} // namespace cmp
