@@ -407,42 +407,40 @@ def main(argv=None):
         if draws >= args.max_draws:
             sys.exit("held_out_landmarks: %d draws gave only %d valid subsets" % (draws, len(subsets)))
         s = len(subsets)
-        tag = "%s-%d" % (first_name, s)
-        output = os.path.join(runs, tag)
-        print("subset %s: running %s" % (held_out, first_name), flush=True)
-        ok, message, seconds = run_command(command, models, held_out, os.path.join(runs, "landmarks-%d" % s),
-                                           output, args.level, first_flags, log=output + ".log",
-                                           reuse=args.reuse)
+        ok, message, seconds, result = run_and_measure(args, command, models, runs, first_name, first_flags, s,
+                                                       held_out)
         if not ok:
             print("  redrawn: %s" % message, flush=True)
             redrawn.append({"held_out": held_out, "reason": message})
             continue
         subsets.append(held_out)
-        errors, _ = measure(models, output, held_out)
-        results[(first_name, s)] = {"errors": errors, "seconds": seconds, "status": "ok",
-                                  "settings": effective_settings(output)}
-        print("  mean %.2f %%, worst %.2f %% (%.0f s)" % (100 * summary(errors)["mean"],
-                                                      100 * summary(errors)["worst"], seconds), flush=True)
+        results[(first_name, s)] = result
 
     for name, flags in configs[1:]:
         for s, held_out in enumerate(subsets):
-            tag = "%s-%d" % (name, s)
-            output = os.path.join(runs, tag)
-            print("subset %s: running %s" % (held_out, name), flush=True)
-            ok, message, seconds = run_command(command, models, held_out, os.path.join(runs, "landmarks-%d" % s),
-                                               output, args.level, flags, log=output + ".log",
-                                               reuse=args.reuse)
+            ok, message, seconds, result = run_and_measure(args, command, models, runs, name, flags, s, held_out)
             if not ok:
                 print("  failed: %s" % message, flush=True)
-                results[(name, s)] = {"errors": [], "seconds": seconds, "status": message}
-                continue
-            errors, _ = measure(models, output, held_out)
-            results[(name, s)] = {"errors": errors, "seconds": seconds, "status": "ok",
-                                 "settings": effective_settings(output)}
-            print("  mean %.2f %%, worst %.2f %% (%.0f s)" % (100 * summary(errors)["mean"],
-                                                          100 * summary(errors)["worst"], seconds), flush=True)
+                result = {"errors": [], "seconds": seconds, "status": message}
+            results[(name, s)] = result
 
     write_results(args, configs, models, subsets, redrawn, results)
+
+
+def run_and_measure(args, command, models, runs, name, flags, s, held_out):
+    """Runs configuration `name` on subset `s` and measures it: (ok, message,
+    seconds, the result's entry)."""
+    output = os.path.join(runs, "%s-%d" % (name, s))
+    print("subset %s: running %s" % (held_out, name), flush=True)
+    ok, message, seconds = run_command(command, models, held_out, os.path.join(runs, "landmarks-%d" % s),
+                                       output, args.level, flags, log=output + ".log", reuse=args.reuse)
+    if not ok:
+        return ok, message, seconds, None
+    errors, _ = measure(models, output, held_out)
+    print("  mean %.2f %%, worst %.2f %% (%.0f s)" % (100 * summary(errors)["mean"], 100 * summary(errors)["worst"],
+                                                  seconds), flush=True)
+    return ok, message, seconds, {"errors": errors, "seconds": seconds, "status": "ok",
+                                  "settings": effective_settings(output)}
 
 
 def write_results(args, configs, models, subsets, redrawn, results):
