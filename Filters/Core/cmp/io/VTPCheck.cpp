@@ -199,6 +199,7 @@ private:
   Status decompressBlock(const ArrayInfo& array, const std::string& data, const BlockData& block, Count index,
     std::string& raw) const;
   Status checkCompressedArray(const ArrayInfo& array, const std::string& data, const BlockData& block);
+  CellArrays* noteCellArray(const ArrayInfo& array, Count bytes);
   Status checkCellArrays() const;
   Count readValue(const std::string& bytes, std::size_t at, const std::string& type) const;
   Status checkAppended(const Tag& tag);
@@ -442,14 +443,10 @@ Status VTPChecker::checkCompressedArray(const ArrayInfo& array, const std::strin
     }
     return checkStringCount(array, strings);
   }
-  if (array.cells.empty() || array.size == 0)
+  CellArrays* found = noteCellArray(array, block.bytes);
+  if (!found)
     return {};
-  CellArrays& cells = cellArrays_[array.cells];
-  if (array.isConnectivity)
-  {
-    cells.haveConnectivity = true;
-    cells.connectivity = block.bytes / static_cast<Count>(array.size);
-  }
+  CellArrays& cells = *found;
   const Count size = static_cast<Count>(array.size);
   if (array.isOffsets && block.bytes >= size && blocks > 0)
   {
@@ -468,6 +465,21 @@ Status VTPChecker::checkCompressedArray(const ArrayInfo& array, const std::strin
     cells.where = array.what;
   }
   return {};
+}
+
+// The cell arrays `array` belongs to (null if none, or if its values have
+// no size), with its value count noted if it is their connectivity.
+CellArrays* VTPChecker::noteCellArray(const ArrayInfo& array, Count bytes)
+{
+  if (array.cells.empty() || array.size == 0)
+    return nullptr;
+  CellArrays& cells = cellArrays_[array.cells];
+  if (array.isConnectivity)
+  {
+    cells.haveConnectivity = true;
+    cells.connectivity = bytes / static_cast<Count>(array.size);
+  }
+  return &cells;
 }
 
 // An integer value of `type` at `at` in the file's byte order (floats: 0).
@@ -510,14 +522,10 @@ Status VTPChecker::checkBinaryArray(const ArrayInfo& array, const std::string& d
     const auto begin = data.begin() + static_cast<std::ptrdiff_t>(block.at);
     return checkStringCount(array, static_cast<Count>(std::count(begin, begin + static_cast<std::ptrdiff_t>(block.bytes), '\0')));
   }
-  if (array.cells.empty() || array.size == 0)
+  CellArrays* found = noteCellArray(array, block.bytes);
+  if (!found)
     return {};
-  CellArrays& cells = cellArrays_[array.cells];
-  if (array.isConnectivity)
-  {
-    cells.haveConnectivity = true;
-    cells.connectivity = block.bytes / static_cast<Count>(array.size);
-  }
+  CellArrays& cells = *found;
   if (array.isOffsets && block.bytes >= static_cast<Count>(array.size))
   {
     cells.haveLastOffset = true;
