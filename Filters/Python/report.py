@@ -118,7 +118,8 @@ def _summary(report):
 def _models(report):
     header = ["model", "vertices", "triangles", "net / √area, traced", "straightened", "flipped parameter triangles",
               "Hausdorff / diagonal", "farthest point: nearest landmark (distance / diagonal)",
-              "flipped remesh triangles (nearest landmark: how many)", "seconds", "result"]
+              "flipped remesh triangles (nearest landmark: how many)", "flipped by the centroid criterion", "seconds",
+              "result"]
     rows = []
     for name, model in report["models"].items():
         remesh = model.get("remesh", {})
@@ -131,6 +132,7 @@ def _models(report):
             "-" if hausdorff is None else "%.2f %%" % (100 * hausdorff),
             _farthest(remesh),
             _folds(remesh),
+            remesh.get("centroid_flips", "-"),
             "%.2f" % sum(model["seconds"].values()),
             "ok" if model.get("status") == "ok" else "failed: %s" % model.get("error", ""),
         ])

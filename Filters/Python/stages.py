@@ -246,6 +246,9 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
             "flipped_triangles": int(value(array_names.FLIPPED_TRIANGLES_FIELD)),
             "folds_near_landmark": folds_near_landmark(remesh),
             "folded_before_repair": int(value(array_names.FOLDED_BEFORE_REPAIR_FIELD)),
+            # The centroid criterion: against the surface nearest to the
+            # triangle's middle rather than under its corners.
+            "centroid_flips": int(value(array_names.CENTROID_FLIPS_FIELD)),
             "repaired_vertices": int(value(array_names.REPAIRED_VERTICES_FIELD)),
             "min_angle_degrees": round(value(array_names.MINIMUM_ANGLE_FIELD), 4),
             "mean_shape_quality": round(value(array_names.MEAN_SHAPE_QUALITY_FIELD), 4),

@@ -36,6 +36,9 @@ constexpr const char* kVertexLevelArray = "VertexLevel";
 constexpr const char* kLevelArray = "Level";
 /// \brief A remesh's cell array: 1 for a triangle facing against its surface.
 constexpr const char* kFoldedArray = "Folded";
+/// \brief A remesh's cell array: 1 for a triangle facing against the
+///        surface nearest to its centroid (the centroid criterion).
+constexpr const char* kCentroidFlippedArray = "CentroidFlipped";
 /// \brief Point normals, as readers and the transfer name them.
 constexpr const char* kNormalsArray = "Normals";
 /// \brief Point texture coordinates.
@@ -129,6 +132,8 @@ constexpr const char* kRemeshLevelField = "RemeshLevel";
 constexpr const char* kVertexCountField = "VertexCount";
 constexpr const char* kTriangleCountField = "TriangleCount";
 constexpr const char* kFoldedBeforeRepairField = "FoldedBeforeRepair";
+/// \brief Triangles flipped by the centroid criterion (after repair).
+constexpr const char* kCentroidFlipsField = "CentroidFlips";
 /// \brief Per landmark (FeatureId order), the folded triangles nearest to it.
 constexpr const char* kFoldsNearFeatureArray = "FoldsNearFeature";
 constexpr const char* kRepairedVerticesField = "RepairedVertices";

@@ -230,6 +230,8 @@ vtkSmartPointer<vtkPolyData> toOutput(const PreparedInput& prepared, const cmp::
   // Per model, unlike PatchId and Level: lets a user threshold the folds.
   remesh->GetCellData()->AddArray(
     cmp::bridge::valueArray<vtkUnsignedCharArray>(cmp::bridge::kFoldedArray, placed.folded));
+  remesh->GetCellData()->AddArray(
+    cmp::bridge::valueArray<vtkUnsignedCharArray>(cmp::bridge::kCentroidFlippedArray, placed.centroidFlipped));
 
   vtkFieldData* field = remesh->GetFieldData();
   // Where folds stay after repair, the landmark to move or to add one
@@ -241,6 +243,7 @@ vtkSmartPointer<vtkPolyData> toOutput(const PreparedInput& prepared, const cmp::
   SharedArrays::describeSize(field, mesh);
   cmp::bridge::setFieldValue(field, cmp::bridge::kFlippedTrianglesField, figures.foldedAfterRepair);
   cmp::bridge::setFieldValue(field, cmp::bridge::kFoldedBeforeRepairField, figures.foldedBeforeRepair);
+  cmp::bridge::setFieldValue(field, cmp::bridge::kCentroidFlipsField, figures.centroidFlips);
   cmp::bridge::setFieldValue(field, cmp::bridge::kRepairedVerticesField, figures.repair.movedVertices);
   cmp::bridge::setFieldValue(field, cmp::bridge::kMinimumAngleField, figures.minimumAngleDegrees);
   cmp::bridge::setFieldValue(field, cmp::bridge::kMeanShapeQualityField, figures.meanShapeQuality);

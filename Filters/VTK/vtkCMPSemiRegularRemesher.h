@@ -33,9 +33,12 @@ class vtkPolyData;
 /// `FeatureId` (f at vertex f, -1 elsewhere), `BaseTriangle` and
 /// `BaseCoordinates` of every remesh vertex. Cell arrays: `PatchId` (the
 /// `L0` triangle of each triangle), `Level` and `Folded` (1 for a triangle
-/// facing against the surface, the ones `FlippedTriangles` counts). Field arrays: `RemeshLevel`,
+/// facing against the surface, the ones `FlippedTriangles` counts) and
+/// `CentroidFlipped` (1 for a triangle facing against the surface nearest
+/// to its centroid, `cmp::centroidFlippedTriangles()`, the ones
+/// `CentroidFlips` counts). Field arrays: `RemeshLevel`,
 /// `VertexCount`, `TriangleCount`, `FlippedTriangles` (after repair),
-/// `FoldedBeforeRepair`, `FoldsNearFeature` (one count per landmark, in
+/// `FoldedBeforeRepair`, `CentroidFlips`, `FoldsNearFeature` (one count per landmark, in
 /// `FeatureId` order: the folded triangles `FlippedTriangles` counts,
 /// after repair when `RepairFolds` is on, nearest to it in remesh edges),
 /// `RepairedVertices`, `MinimumAngle`,

@@ -365,3 +365,40 @@ TEST(FoldRepair, NamesTheLandmarksWhereTheFoldsStayOnModel384)
     GTEST_SKIP() << "no fold left on 384 to attribute to a landmark";
   EXPECT_EQ(counts[8] + counts[20], total);
 }
+
+TEST(FoldRepair, TheCentroidCriterionAsksTheSurfaceNearestToEachTriangleMiddle)
+{
+  // A remesh that is its surface faces with it everywhere; turning one
+  // triangle round flips that one alone.
+  const TriangleMesh surface = test::sphere(2);
+  TriangleMesh placed = surface;
+  std::vector<char> flipped = centroidFlippedTriangles(surface, placed);
+  ASSERT_EQ(flipped.size(), placed.triangles.size());
+  EXPECT_EQ(std::count(flipped.begin(), flipped.end(), 1), 0);
+  std::swap(placed.triangles[7][1], placed.triangles[7][2]);
+  flipped = centroidFlippedTriangles(surface, placed);
+  EXPECT_EQ(std::count(flipped.begin(), flipped.end(), 1), 1);
+  EXPECT_EQ(flipped[7], 1);
+
+  // A thin slab, 1 wide and 0.05 thick, faces up on top and down below.
+  // An upward triangle whose middle is nearer the top faces with it; the
+  // same triangle nearer the bottom hangs over the wrong side and is
+  // flipped, as a remesh triangle cutting across a thin tail would be.
+  TriangleMesh slab;
+  const double h = 0.05;
+  for (double z : { 0.0, h })
+    for (double y : { 0.0, 1.0 })
+      for (double x : { 0.0, 1.0 })
+        slab.points.push_back(Vec3(x, y, z));
+  // Outward (counter-clockwise seen from outside) faces of the box.
+  slab.triangles = { { 0, 2, 1 }, { 1, 2, 3 }, { 4, 5, 6 }, { 5, 7, 6 }, { 0, 1, 5 }, { 0, 5, 4 },
+    { 2, 6, 7 }, { 2, 7, 3 }, { 0, 4, 6 }, { 0, 6, 2 }, { 1, 3, 7 }, { 1, 7, 5 } };
+  const auto upward = [](double z) {
+    return TriangleMesh{ { Vec3(0.3, 0.3, z), Vec3(0.7, 0.3, z), Vec3(0.5, 0.7, z) }, { { 0, 1, 2 } } };
+  };
+  EXPECT_EQ(centroidFlippedTriangles(slab, upward(0.9 * h))[0], 0);
+  EXPECT_EQ(centroidFlippedTriangles(slab, upward(0.1 * h))[0], 1);
+  // A triangle with no area has no normal to disagree with.
+  const TriangleMesh flat{ { Vec3(0.3, 0.3, 0.01), Vec3(0.5, 0.3, 0.01), Vec3(0.7, 0.3, 0.01) }, { { 0, 1, 2 } } };
+  EXPECT_EQ(centroidFlippedTriangles(slab, flat)[0], 0);
+}

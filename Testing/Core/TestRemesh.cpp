@@ -88,6 +88,10 @@ TEST_F(RemeshOfSpheres, IsTheChainOfItsParts)
     EXPECT_EQ(placed.foldsNearFeature, foldsNearLandmarks(nearest, domain_.mesh.vertexCount(), folded));
     EXPECT_EQ(figures.foldedBeforeRepair, repair.foldedBefore);
     EXPECT_EQ(figures.foldedAfterRepair, static_cast<int>(std::count(folded.begin(), folded.end(), 1)));
+    const std::vector<char> centroidFlipped =
+      centroidFlippedTriangles(surfaces_[m], TriangleMesh{ positions, mesh.triangles });
+    EXPECT_EQ(placed.centroidFlipped, centroidFlipped);
+    EXPECT_EQ(figures.centroidFlips, static_cast<int>(std::count(centroidFlipped.begin(), centroidFlipped.end(), 1)));
     EXPECT_EQ(figures.repair.movedVertices, repair.movedVertices);
     const TriangleShapeSummary shape = measureTriangleShapes(positions, mesh.triangles);
     EXPECT_EQ(figures.minimumAngleDegrees, shape.minimumAngleDegrees);

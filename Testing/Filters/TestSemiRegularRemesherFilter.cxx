@@ -286,14 +286,20 @@ void expectRemeshed(vtkPolyData* remesh, vtkPolyData* original, vtkPolyData* inp
   ASSERT_NE(points->GetArray("BaseTriangle"), nullptr) << what;
   ASSERT_NE(points->GetArray("BaseCoordinates"), nullptr) << what;
   EXPECT_EQ(remesh->GetCellData()->GetArray("PatchId")->GetRange()[1], l0->GetNumberOfCells() - 1) << what;
-  // Folded marks exactly the triangles FlippedTriangles counts.
-  vtkDataArray* folded = remesh->GetCellData()->GetArray("Folded");
-  ASSERT_NE(folded, nullptr) << what;
-  ASSERT_EQ(folded->GetNumberOfTuples(), triangleCount(l0, level)) << what;
-  double foldedSum = 0.0;
-  for (vtkIdType c = 0; c < folded->GetNumberOfTuples(); ++c)
-    foldedSum += folded->GetComponent(c, 0);
-  EXPECT_EQ(foldedSum, flipped) << what;
+  // Folded marks exactly the triangles FlippedTriangles counts, and
+  // CentroidFlipped those CentroidFlips counts.
+  for (const auto& [cells, count] : { std::pair<const char*, const char*>{ "Folded", "FlippedTriangles" },
+         std::pair<const char*, const char*>{ "CentroidFlipped", "CentroidFlips" } })
+  {
+    vtkDataArray* marked = remesh->GetCellData()->GetArray(cells);
+    ASSERT_NE(marked, nullptr) << what << ": " << cells;
+    ASSERT_EQ(marked->GetNumberOfTuples(), triangleCount(l0, level)) << what << ": " << cells;
+    double sum = 0.0;
+    for (vtkIdType c = 0; c < marked->GetNumberOfTuples(); ++c)
+      sum += marked->GetComponent(c, 0);
+    ASSERT_NE(field->GetArray(count), nullptr) << what << ": " << count;
+    EXPECT_EQ(sum, field->GetArray(count)->GetComponent(0, 0)) << what << ": " << cells;
+  }
   // FoldsNearFeature shares them out among the landmarks.
   vtkDataArray* foldsNear = field->GetArray("FoldsNearFeature");
   ASSERT_NE(foldsNear, nullptr) << what;

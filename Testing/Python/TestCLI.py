@@ -232,7 +232,7 @@ def check_straightened(out, name, model, landmarks=21, flips_allowed=False):
 REMESH_KEYS = ("level", "vertices", "triangles", "hausdorff_distance", "hausdorff_per_diagonal", "mean_distance",
                "hausdorff_point", "hausdorff_point_on", "hausdorff_nearest_landmark",
                "hausdorff_landmark_distance_per_diagonal", "flipped_triangles", "folds_near_landmark", "folded_before_repair",
-               "repaired_vertices", "min_angle_degrees", "mean_shape_quality", "seconds")
+               "centroid_flips", "repaired_vertices", "min_angle_degrees", "mean_shape_quality", "seconds")
 
 
 def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0):
@@ -312,6 +312,12 @@ def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0
         check_equal(list(near.values()), sorted(near.values(), reverse=True), name + ": folds_near_landmark order")
         check_equal(sum(field.GetArray("FoldsNearFeature").GetValue(f) for f in range(landmarks)),
                     figures["flipped_triangles"], name + ": FoldsNearFeature")
+        # The centroid criterion: its count, and the cells it marks.
+        flipped = remesh.GetCellData().GetArray("CentroidFlipped")
+        check_equal(figures["centroid_flips"], int(field.GetArray("CentroidFlips").GetValue(0)),
+                    name + ": centroid_flips against the remesh's field data")
+        check_equal(sum(int(flipped.GetValue(t)) for t in range(flipped.GetNumberOfTuples())),
+                    figures["centroid_flips"], name + ": CentroidFlipped cells")
         for key, array in (("hausdorff_distance", "HausdorffDistance"), ("hausdorff_per_diagonal",
                            "HausdorffDistanceRelative"), ("mean_distance", "MeanDistance")):
             written = field.GetArray(array).GetValue(0)

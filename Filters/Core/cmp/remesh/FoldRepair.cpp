@@ -1,5 +1,6 @@
 #include <cmp/remesh/FoldRepair.h>
 
+#include <cmp/mesh/SurfaceDistance.h>
 #include <cmp/mesh/SurfaceWalk.h>
 #include <cmp/mesh/TriangleShape.h>
 
@@ -593,6 +594,28 @@ std::vector<char> foldedTriangles(
   std::vector<char> folded(qualities.size());
   std::transform(qualities.begin(), qualities.end(), folded.begin(), [](double q) { return q < 0.0; });
   return folded;
+}
+
+std::vector<char> centroidFlippedTriangles(const TriangleMesh& surface, const TriangleMesh& placed)
+{
+  std::vector<char> flipped(placed.triangles.size(), 0);
+  const ClosestPointQuery query(surface);
+  const auto normal = [](const TriangleMesh& mesh, const Triangle& t) {
+    return Vec3((mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]));
+  };
+  for (std::size_t t = 0; t < placed.triangles.size(); ++t)
+  {
+    const Triangle& triangle = placed.triangles[t];
+    const Vec3 centroid = (placed.points[triangle[0]] + placed.points[triangle[1]] + placed.points[triangle[2]]) / 3.0;
+    const ClosestPointQuery::Result nearest = query.closest(centroid);
+    if (nearest.triangle < 0)
+      continue;
+    const Vec3 own = normal(placed, triangle);
+    const Vec3 under = normal(surface, surface.triangles[nearest.triangle]);
+    // Both zero-area cases give a zero product: not counted.
+    flipped[t] = own.dot(under) < 0.0;
+  }
+  return flipped;
 }
 
 std::vector<int> nearestLandmarkOfTriangles(const SemiRegularMesh& remesh, int landmarkCount)

@@ -4,8 +4,9 @@
 ///        sliding a few vertices a short way along that surface.
 
 #include <cmp/mesh/EditableMesh.h>
-#include <cmp/remesh/SemiRegularRemesher.h>
 #include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
 
 #include <vector>
 
@@ -57,6 +58,19 @@ int countFoldedTriangles(
 ///        for the others, in triangle order.
 std::vector<char> foldedTriangles(
   const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
+
+/// \brief The centroid criterion, a second opinion on folds that needs
+///        no parameterization: 1 for each triangle of `placed` (a remesh
+///        as placed in space) whose normal points against the normal of
+///        the `surface` triangle holding the point of `surface` nearest to
+///        its centroid, 0 for the others, in triangle order. A zero-area
+///        triangle of either mesh is not counted.
+///
+/// Unlike `foldedTriangles()`, which asks the surface under a triangle's
+/// corners, it also catches a triangle whose corners lie on one side of a
+/// thin part (a tail, an ear) while its middle hangs over the other.
+/// O(n log n) in the surface and O(log n) per remesh triangle.
+std::vector<char> centroidFlippedTriangles(const TriangleMesh& surface, const TriangleMesh& placed);
 
 /// \brief For every remesh triangle, the landmark nearest to it: feature f
 ///        (remesh vertex f, f < `landmarkCount`, the base domain's vertex

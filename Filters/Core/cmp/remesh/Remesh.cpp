@@ -91,6 +91,8 @@ Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const s
   placed.folded = foldedTriangles(mesh, net.mesh, placed.samples);
   figures.foldedAfterRepair = static_cast<int>(std::count(placed.folded.begin(), placed.folded.end(), 1));
   figures.foldedBeforeRepair = options.repairFolds ? figures.repair.foldedBefore : figures.foldedAfterRepair;
+  placed.centroidFlipped = centroidFlippedTriangles(*model.surface, TriangleMesh{ placed.positions, mesh.triangles });
+  figures.centroidFlips = static_cast<int>(std::count(placed.centroidFlipped.begin(), placed.centroidFlipped.end(), 1));
   const TriangleShapeSummary shape = measureTriangleShapes(placed.positions, mesh.triangles);
   figures.minimumAngleDegrees = shape.minimumAngleDegrees;
   figures.meanShapeQuality = shape.meanShapeQuality;

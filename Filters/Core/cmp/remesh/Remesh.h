@@ -73,6 +73,9 @@ struct RemeshedModel
   std::vector<SurfaceSample> samples; ///< Where each remesh vertex lies on the model's layout.
   std::vector<Vec3> positions;        ///< Their positions.
   std::vector<char> folded;           ///< Per triangle: 1 if it faces against the model (after repair).
+  /// \brief Per triangle: 1 if it faces against the model by the centroid
+  ///        criterion (`centroidFlippedTriangles()`, after repair).
+  std::vector<char> centroidFlipped;
   /// \brief Per landmark (FeatureId order), the folded triangles nearest to
   ///        it in remesh edges (`foldsNearLandmarks()`): which landmark to
   ///        move, or to add one beside.
@@ -91,6 +94,9 @@ struct RemeshModelReport
 {
   int foldedBeforeRepair = 0;     ///< Folded triangles before repair (`foldedAfterRepair` without repair).
   int foldedAfterRepair = 0;      ///< Folded triangles left, the ones `RemeshedModel::folded` marks.
+  /// \brief Triangles flipped by the centroid criterion after repair, the
+  ///        ones `RemeshedModel::centroidFlipped` marks.
+  int centroidFlips = 0;
   FoldRepairReport repair;        ///< The fold repair's own report (zero without repair).
   double minimumAngleDegrees = 0.0; ///< Smallest corner angle of the placed remesh.
   double meanShapeQuality = 0.0;  ///< Mean `triangleShapeQuality()` of the placed remesh.
