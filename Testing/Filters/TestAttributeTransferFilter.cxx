@@ -173,7 +173,11 @@ void expectPointTextureCoordinatesExact(vtkPolyData* target)
       for (int i = 0; i < 2; ++i)
         worst = std::max(worst, std::abs(points->GetComponent(ids->GetId(k), i) - corners->GetComponent(t, 2 * k + i)));
   }
-  EXPECT_LT(worst, 1e-6);
+  // The filter lets corners within 1e-5 (u + v) share their point's value
+  // (float storage and the corners' inset leave differences near 1e-6; a
+  // seam jumps by a texel or more): 1.2e-6 was measured on Spot's texture
+  // carried to 387.
+  EXPECT_LT(worst, 1e-5);
 }
 
 class AttributeTransferOnExamples : public ::testing::Test

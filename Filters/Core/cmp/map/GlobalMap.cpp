@@ -31,6 +31,8 @@ constexpr double kLongestStepShare = 0.5;
 struct Metric
 {
   double area = 0.0;
+  /// The energy's weight over the area (1 but near a landmark).
+  double weight = 1.0;
   Eigen::Matrix2d inverseEdges = Eigen::Matrix2d::Zero();
 };
 
@@ -54,7 +56,8 @@ double triangleEnergy(const Metric& metric, const std::array<Vec2, 3>& p, double
   {
     Eigen::Matrix2d cofactor;
     cofactor << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
-    const Eigen::Matrix2d dJ = metric.area * (2.0 * (1.0 + inverse) * J - 2.0 * frobenius * inverse / d * cofactor);
+    const Eigen::Matrix2d dJ =
+      metric.weight * metric.area * (2.0 * (1.0 + inverse) * J - 2.0 * frobenius * inverse / d * cofactor);
     const Eigen::Matrix2d dE = side * dJ * metric.inverseEdges.transpose();
     if (corner == 1)
       *gradient += dE.col(0);
@@ -63,7 +66,7 @@ double triangleEnergy(const Metric& metric, const std::array<Vec2, 3>& p, double
     else
       *gradient -= dE.col(0) + dE.col(1);
   }
-  return metric.area * frobenius * (1.0 + inverse);
+  return metric.weight * metric.area * frobenius * (1.0 + inverse);
 }
 
 
@@ -203,6 +206,26 @@ private:
   std::vector<int> sector_; ///< Base triangle (centre, ring i, ring i + 1).
   std::vector<Vec2> legs_;  ///< Chart place of ring vertex i (k + 1 of them: the cut's twice).
 };
+
+/// Per surface triangle, 1 + min(cap, (radius / r)^2), r the distance of
+/// its centroid from the nearest landmark (see
+/// `GlobalMapOptions::landmarkWeightRadius`); empty if `radius` is 0.
+std::vector<double> landmarkWeights(const EditableMesh& mesh, const std::vector<int>& landmarks, double radius, double cap)
+{
+  if (!(radius > 0.0) || !(cap > 0.0))
+    return {};
+  std::vector<double> weights(mesh.triangleCount(), 1.0);
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    const Triangle& tri = mesh.triangle(t);
+    const Vec3 c = (mesh.point(tri[0]) + mesh.point(tri[1]) + mesh.point(tri[2])) / 3.0;
+    double nearest = kInfinity;
+    for (int l : landmarks)
+      nearest = std::min(nearest, (mesh.point(l) - c).squaredNorm());
+    weights[t] = 1.0 + (nearest > 0.0 ? std::min(cap, radius * radius / nearest) : cap);
+  }
+  return weights;
+}
 
 /// One star's solve: the surface vertices whose whole ring lies in the
 /// star of base vertex `center` (the landmarks aside, and away from the
@@ -482,7 +505,7 @@ public:
     double largest = 0.0;
     for (int t = 0; t < mesh_.triangleCount(); ++t)
       if (metrics_[t].area > 0.0)
-        largest = std::max(largest, energy(t) / (4.0 * metrics_[t].area));
+        largest = std::max(largest, energy(t) / (4.0 * metrics_[t].weight * metrics_[t].area));
     return largest;
   }
 
@@ -490,6 +513,22 @@ public:
 
   /// The side of every base triangle, drawn equilateral.
   void setSide(double side) { side_ = side; }
+
+  /// Weighs each triangle's energy (one factor per triangle, or none: 1).
+  void setWeights(const std::vector<double>& weights)
+  {
+    for (int t = 0; t < mesh_.triangleCount(); ++t)
+      metrics_[t].weight = weights.empty() ? 1.0 : weights[t];
+  }
+
+  /// The unweighted energy.
+  double totalPlainEnergy() const
+  {
+    double sum = 0.0;
+    for (int t = 0; t < mesh_.triangleCount(); ++t)
+      sum += energy(t) / metrics_[t].weight;
+    return sum;
+  }
 
   /// One move of free vertex v; true if it moved.
   bool relax(int v)
@@ -778,6 +817,9 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
     return Status::error("global map: the parameterization does not belong to this surface");
   if (options.maximumSweeps < 0 || !(options.leastRelativeGain >= 0.0))
     return Status::error("global map: sweeps must be >= 0 and the least relative gain >= 0");
+  if (!(options.landmarkWeightRadius >= 0.0) || !std::isfinite(options.landmarkWeightRadius) ||
+    !(options.landmarkWeightCap > 0.0) || !std::isfinite(options.landmarkWeightCap))
+    return Status::error("global map: the landmark weight radius must be finite and >= 0, its cap finite and > 0");
   const int baseTriangles = domain.mesh.triangleCount();
   std::vector<BasePoint> start(n);
   for (int v = 0; v < n; ++v)
@@ -798,13 +840,13 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
   if (!std::isfinite(energy))
     return Status::error("global map: the starting map has a flipped or crushed triangle");
   result.distortionBefore = energy / (4.0 * area);
+  const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * baseTriangles));
   {
     std::vector<char> pinned(n, 0);
     for (int v : net.landmarkVertex)
       pinned[v] = 1;
     SymmetricDirichletOptions relax;
     relax.maximumIterations = options.starIterations;
-    const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * baseTriangles));
     for (int round = 0; round < options.starRounds; ++round)
     {
       for (int b = 0; b < domain.mesh.vertexCount(); ++b)
@@ -817,6 +859,16 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
       if (settled)
         break;
     }
+  }
+  // The star solves spread the map unweighted: weighted, they denied tails
+  // and ears beside a landmark their room. The sweeps then polish it with
+  // the landmarks' rings weighted.
+  const std::vector<double> weights =
+    landmarkWeights(mesh, net.landmarkVertex, options.landmarkWeightRadius * side, options.landmarkWeightCap);
+  if (!weights.empty())
+  {
+    optimizer.setWeights(weights);
+    energy = optimizer.totalEnergy();
   }
   for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
   {
@@ -831,7 +883,7 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const B
     if (moved == 0 || settled)
       break;
   }
-  result.distortionAfter = energy / (4.0 * area);
+  result.distortionAfter = optimizer.totalPlainEnergy() / (4.0 * area);
   result.maximumDistortion = optimizer.largestDistortion();
   for (int v = 0; v < n; ++v)
   {

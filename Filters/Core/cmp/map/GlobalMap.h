@@ -34,6 +34,21 @@ struct GlobalMapOptions
   int starRounds = 4;
   /// \brief SLIM steps per star solve at most.
   int starIterations = 50;
+  /// \brief Near the landmarks the sweeps ask the map to be closer to
+  ///        isometric (the star solves before them are unweighted: weighted,
+  ///        they denied a tail or an ear beside a landmark its room): each
+  ///        triangle's energy is multiplied by 1 + min(cap, (R / r)^2),
+  ///        r the distance of its centroid from the nearest landmark and R
+  ///        this radius in sides of the drawn base triangles (0: every
+  ///        weight 1). A landmark is pinned, so an unweighted map tends to
+  ///        pinch there: the landmark's ring is squeezed to one side in the
+  ///        chart and a remesh triangle at that corner spans most of a turn
+  ///        round it, a fold the remesh cannot avoid.
+  double landmarkWeightRadius = 0.125;
+  /// \brief The largest extra weight, `cap` above: uncapped, the triangles
+  ///        at a landmark would weigh so much that the sweeps crawl and a
+  ///        protrusion beside the landmark is denied room.
+  double landmarkWeightCap = 16.0;
 };
 
 /// \brief What `optimizeGlobalMap()` did.
@@ -73,7 +88,9 @@ struct GlobalMapReport
 ///   those vertices held, then skipped;
 /// - then Gauss-Seidel sweeps: each free vertex in turn, down its energy's
 ///   gradient with a Newton step length along it, halved until its
-///   triangles' energy falls.
+///   triangles' energy falls; each triangle's energy weighted by its
+///   nearness to a landmark (`landmarkWeightRadius`), so that no landmark's
+///   ring is pinched to one side of it.
 ///
 /// \pre `map` is bijective on every patch (no flipped triangle).
 /// Fails, naming the problem, if sizes disagree or a triangle of the
