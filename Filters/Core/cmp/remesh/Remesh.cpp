@@ -46,11 +46,11 @@ int nearestLandmark(const TracedNet& net, const Vec3& point, double& distance)
 
 /// Sampled both ways: input to remesh catches features the remesh cuts
 /// off, remesh to input catches triangles spanning concave regions.
-void measureDistance(const BaseDomain& domain, const RemeshModel& model, const RemeshedModel& placed,
-  const SemiRegularMesh& mesh, RemeshModelReport& figures)
+void measureDistance(
+  const BaseDomain& domain, const RemeshModel& model, const TriangleMesh& placed, RemeshModelReport& figures)
 {
   const Clock::time_point start = Clock::now();
-  const SurfaceDistance distance = surfaceDistance(*model.surface, TriangleMesh{ placed.positions, mesh.triangles });
+  const SurfaceDistance distance = surfaceDistance(*model.surface, placed);
   const double diagonal = boundingBoxDiagonal(*model.surface);
   figures.distanceMeasured = true;
   figures.hausdorffDistance = distance.hausdorff();
@@ -91,7 +91,9 @@ Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const s
   placed.folded = foldedTriangles(mesh, net.mesh, placed.samples);
   figures.foldedAfterRepair = static_cast<int>(std::count(placed.folded.begin(), placed.folded.end(), 1));
   figures.foldedBeforeRepair = options.repairFolds ? figures.repair.foldedBefore : figures.foldedAfterRepair;
-  placed.centroidFlipped = centroidFlippedTriangles(*model.surface, TriangleMesh{ placed.positions, mesh.triangles });
+  // The remesh as placed in space, for the centroid criterion and the distance.
+  const TriangleMesh inSpace{ placed.positions, mesh.triangles };
+  placed.centroidFlipped = centroidFlippedTriangles(*model.surface, inSpace);
   figures.centroidFlips = static_cast<int>(std::count(placed.centroidFlipped.begin(), placed.centroidFlipped.end(), 1));
   const TriangleShapeSummary shape = measureTriangleShapes(placed.positions, mesh.triangles);
   figures.minimumAngleDegrees = shape.minimumAngleDegrees;
@@ -99,7 +101,7 @@ Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const s
   placed.foldsNearFeature =
     foldsNearLandmarks(nearestLandmarks, static_cast<int>(domain.featureIds.size()), placed.folded);
   if (options.computeDistance)
-    measureDistance(domain, model, placed, mesh, figures);
+    measureDistance(domain, model, inSpace, figures);
   figures.seconds = secondsSince(start);
   return {};
 }
