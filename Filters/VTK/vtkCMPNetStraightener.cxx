@@ -1,12 +1,9 @@
 #include "vtkCMPNetStraightener.h"
 
-#include <cmp/map/GlobalMap.h>
-
 #include <cmp/layout/CurveSpread.h>
 #include <cmp/layout/LayoutValidator.h>
-#include <cmp/map/NetStraightener.h>
 #include <cmp/layout/PatchLayout.h>
-#include <cmp/map/PatchParameterization.h>
+#include <cmp/map/Straighten.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkCellData.h>
@@ -23,7 +20,6 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -50,21 +46,6 @@ namespace
 
 using cmp::bridge::kBaseTriangleArray;
 using cmp::bridge::kBaseCoordinatesArray;
-
-/// The first property out of range, described; "" when all are fine. The
-/// setters do not clamp, so that a wrong value is reported rather than
-/// silently changed.
-std::string propertyProblem(int sweeps, double tolerance, double snap)
-{
-  std::ostringstream problem;
-  if (sweeps < 0)
-    problem << "MaximumSweeps must be 0 or more (it is " << sweeps << ")";
-  else if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
-    problem << "Tolerance must be a finite number >= 0 (it is " << tolerance << ")";
-  else if (!(snap >= 0.0 && snap < 0.5))
-    problem << "SnapTolerance must be at least 0 and below 0.5 (it is " << snap << ")";
-  return problem.str();
-}
 
 /// Point data of the straightened surface: every input array interpolated
 /// with the input location of each new vertex, FeatureId written anew, and
@@ -163,10 +144,17 @@ int vtkCMPNetStraightener::RequestData(
     vtkErrorMacro(<< model << "no base domain: connect L0 (the one the net was traced against) to the second input");
     return 0;
   }
-  if (const std::string problem = propertyProblem(this->MaximumSweeps, this->Tolerance, this->SnapTolerance);
-      !problem.empty())
+  cmp::StraightenOptions options;
+  options.net.maxSweeps = this->MaximumSweeps;
+  options.net.tolerance = this->Tolerance;
+  options.net.snapTolerance = this->SnapTolerance;
+  options.patches.lowerStretch = this->LowerStretch;
+  options.freeCurves = this->FreeCurves;
+  options.map.maximumSweeps = this->MapSweeps;
+  options.progress = [this](double fraction) { this->UpdateProgress(0.8 * fraction); };
+  if (const cmp::Status problem = cmp::checkStraightenOptions(options); !problem.ok())
   {
-    vtkErrorMacro(<< model << problem);
+    vtkErrorMacro(<< model << problem.message());
     return 0;
   }
   cmp::TriangleMesh mesh;
@@ -190,48 +178,14 @@ int vtkCMPNetStraightener::RequestData(
   if (status.ok())
     status = cmp::layoutFromPatchIds(mesh, patchIds, landmarks, domain, traced);
   cmp::StraightenedNet straight;
-  cmp::NetStraightenerReport report;
-  if (status.ok())
-  {
-    cmp::NetStraightenerOptions options;
-    options.maxSweeps = this->MaximumSweeps;
-    options.tolerance = this->Tolerance;
-    options.snapTolerance = this->SnapTolerance;
-    options.progress = [this](double fraction) { this->UpdateProgress(0.8 * fraction); };
-    status = cmp::straightenNet(traced, domain, straight, options, &report);
-  }
   cmp::PatchParameterization parameterization;
-  cmp::FreeCurvesReport freeCurves;
+  cmp::StraightenReport straightenReport;
   if (status.ok())
-  {
-    cmp::PatchParameterizationOptions options;
-    options.lowerStretch = this->LowerStretch;
-    status = cmp::parameterizePatches(straight.net, domain, parameterization, options);
-    if (status.ok() && this->FreeCurves)
-    {
-      if (this->MapSweeps < 0)
-        status = cmp::Status::error("MapSweeps must be 0 or more (it is " + std::to_string(this->MapSweeps) + ")");
-      cmp::GlobalMapOptions mapOptions;
-      mapOptions.maximumSweeps = std::max(0, this->MapSweeps);
-      cmp::StraightenedNet moved;
-      cmp::PatchParameterization movedMap;
-      if (status.ok())
-        status = cmp::freeCurves(straight, domain, parameterization, mapOptions, options, moved, movedMap, &freeCurves);
-      if (status.ok())
-      {
-        straight = std::move(moved);
-        parameterization = std::move(movedMap);
-        if (freeCurves.applied)
-        {
-          report.netLengthAfter = cmp::netLength(straight.net);
-          report.areaVariationAfter =
-            cmp::areaVariation(cmp::patchAreas(straight.net, domain.mesh.triangleCount()));
-        }
-        else
-          vtkWarningMacro(<< model << "FreeCurves kept the straightened curves: " << freeCurves.reason);
-      }
-    }
-  }
+    status = cmp::straighten(traced, domain, straight, parameterization, options, &straightenReport);
+  const cmp::NetStraightenerReport& report = straightenReport.net;
+  const cmp::FreeCurvesReport& freeCurves = straightenReport.freeCurves;
+  if (status.ok() && this->FreeCurves && !freeCurves.applied)
+    vtkWarningMacro(<< model << "FreeCurves kept the straightened curves: " << freeCurves.reason);
   if (!status.ok())
   {
     vtkErrorMacro(<< model << status.message());

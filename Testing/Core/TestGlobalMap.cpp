@@ -5,6 +5,7 @@
 #include <cmp/map/GlobalMap.h>
 #include <cmp/map/NetStraightener.h>
 #include <cmp/map/PatchParameterization.h>
+#include <cmp/map/Straighten.h>
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>
@@ -253,15 +254,12 @@ TEST(GlobalMap, FreeCurvesMoveTheCurvesOfModelsWhoseL0HasLandmarksOfHighAndLowVa
       SCOPED_TRACE(name);
       const test::LandmarkedModel model = test::landmarkedRealModel(name);
       TracedNet traced;
-      StraightenedNet straight;
-      PatchParameterization map;
-      ASSERT_TRUE(traceFeatureNet(model.data.mesh, model.landmarks, domain, traced).ok());
-      ASSERT_TRUE(straightenNet(traced, domain, straight).ok());
-      ASSERT_TRUE(parameterizePatches(straight.net, domain, map).ok());
       StraightenedNet moved;
       PatchParameterization movedMap;
-      FreeCurvesReport report;
-      ASSERT_TRUE(freeCurves(straight, domain, map, {}, {}, moved, movedMap, &report).ok());
+      ASSERT_TRUE(traceFeatureNet(model.data.mesh, model.landmarks, domain, traced).ok());
+      StraightenReport straightened;
+      ASSERT_TRUE(straighten(traced, domain, moved, movedMap, {}, &straightened).ok());
+      const FreeCurvesReport& report = straightened.freeCurves;
       EXPECT_TRUE(report.applied) << report.reason;
       EXPECT_EQ(movedMap.flippedTriangles, 0);
       for (const std::string& problem : validateLayout(toLabelledSurface(moved.net, domain), toBaseTriangles(domain)))

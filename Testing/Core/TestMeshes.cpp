@@ -3,6 +3,7 @@
 #include <cmp/basedomain/BaseDomainBuilder.h>
 
 #include <cmp/map/NetStraightener.h>
+#include <cmp/map/Straighten.h>
 #include <cmp/layout/NetTracer.h>
 #include <cmp/mesh/Subdivision.h>
 
@@ -174,12 +175,12 @@ Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& doma
   TracedNet traced;
   if (Status s = traceFeatureNet(model.data.mesh, model.landmarks, domain, traced); !s.ok())
     return Status::error(model.name + ": tracing: " + s.message());
+  StraightenOptions options;
+  options.freeCurves = false; // the straightened curves, as the paper leaves them
   StraightenedNet straight;
-  if (Status s = straightenNet(traced, domain, straight); !s.ok())
-    return Status::error(model.name + ": straightening: " + s.message());
+  if (Status s = straighten(traced, domain, straight, out.parameterization, options); !s.ok())
+    return Status::error(model.name + ": straightening and parameterizing: " + s.message());
   out.net = std::move(straight.net);
-  if (Status s = parameterizePatches(out.net, domain, out.parameterization); !s.ok())
-    return Status::error(model.name + ": parameterizing: " + s.message());
   return {};
 }
 

@@ -2,6 +2,7 @@
 #include <cmp/layout/LayoutValidator.h>
 #include <cmp/io/MeshFile.h>
 #include <cmp/map/NetStraightener.h>
+#include <cmp/map/Straighten.h>
 #include <cmp/layout/NetTracer.h>
 #include <cmp/map/PatchParameterization.h>
 #include "TestMeshes.h"
@@ -66,9 +67,11 @@ StraightenResult expectStraightened(const TriangleMesh& surface, const LandmarkL
     return result;
   StraightenedNet straight;
   const auto start = std::chrono::steady_clock::now();
-  Status status = straightenNet(traced, domain, straight, {}, &result.report);
-  if (status.ok())
-    status = parameterizePatches(straight.net, domain, result.parameterization);
+  StraightenOptions options;
+  options.freeCurves = false; // this file checks the straightening itself
+  StraightenReport report;
+  const Status status = straighten(traced, domain, straight, result.parameterization, options, &report);
+  result.report = report.net;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_TRUE(status.ok()) << what << ": " << status.message();
   if (!status.ok())

@@ -1,0 +1,78 @@
+#include <cmp/map/Straighten.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+namespace cmp
+{
+
+Status checkStraightenOptions(const StraightenOptions& options)
+{
+  std::ostringstream problem;
+  const NetStraightenerOptions& net = options.net;
+  if (net.maxSweeps < 0)
+    problem << "MaximumSweeps must be 0 or more (it is " << net.maxSweeps << ")";
+  else if (!(net.tolerance >= 0.0) || !std::isfinite(net.tolerance))
+    problem << "Tolerance must be a finite number >= 0 (it is " << net.tolerance << ")";
+  else if (!(net.snapTolerance >= 0.0 && net.snapTolerance < 0.5))
+    problem << "SnapTolerance must be at least 0 and below 0.5 (it is " << net.snapTolerance << ")";
+  else if (options.freeCurves && options.map.maximumSweeps < 0)
+    problem << "MapSweeps must be 0 or more (it is " << options.map.maximumSweeps << ")";
+  return problem.str().empty() ? Status{} : Status::error(problem.str());
+}
+
+Status straighten(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out, PatchParameterization& map,
+  const StraightenOptions& options, StraightenReport* report)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto since = [](Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const Clock::time_point start = Clock::now();
+  StraightenReport local;
+  StraightenReport& r = report ? *report : local;
+  r = StraightenReport{};
+  if (Status status = checkStraightenOptions(options); !status.ok())
+    return status;
+
+  NetStraightenerOptions netOptions = options.net;
+  netOptions.progress = options.progress;
+  StraightenedNet straight;
+  Clock::time_point part = Clock::now();
+  Status status = straightenNet(traced, domain, straight, netOptions, &r.net);
+  r.straightenSeconds = since(part);
+  PatchParameterization parameterization;
+  if (status.ok())
+  {
+    part = Clock::now();
+    status = parameterizePatches(straight.net, domain, parameterization, options.patches);
+    r.parameterizeSeconds = since(part);
+  }
+  if (status.ok() && options.freeCurves)
+  {
+    part = Clock::now();
+    StraightenedNet moved;
+    PatchParameterization movedMap;
+    status = freeCurves(straight, domain, parameterization, options.map, options.patches, moved, movedMap, &r.freeCurves);
+    if (status.ok())
+    {
+      straight = std::move(moved);
+      parameterization = std::move(movedMap);
+      if (r.freeCurves.applied)
+      {
+        r.net.netLengthAfter = netLength(straight.net);
+        r.net.areaVariationAfter = areaVariation(patchAreas(straight.net, domain.mesh.triangleCount()));
+      }
+    }
+    r.mapSeconds = since(part);
+  }
+  if (status.ok())
+  {
+    out = std::move(straight);
+    map = std::move(parameterization);
+  }
+  r.seconds = since(start);
+  return status;
+}
+
+} // namespace cmp
