@@ -278,13 +278,65 @@ const char* stateName(StageState state)
   return "not-run";
 }
 
+/// \brief The pipeline's speed against the issue's yardstick: per model its
+///        total, the yardstick and their ratio, and the median ratio.
+std::string yardstickSection(const std::vector<ModelResult>& results)
+{
+  std::string table = tableHeader({ "model", "total", "yardstick", "ratio" }, 1);
+  int count = 0;
+  double median = 0.0;
+  for (const ModelResult& result : results)
+  {
+    const Figure* ratio = findFigure(result, "pipeline_per_yardstick");
+    const Figure* yardstick = findFigure(result, "yardstick_seconds");
+    const Figure* middle = findFigure(result, "pipeline_per_yardstick_median");
+    if (!ratio || !yardstick || !middle)
+      continue;
+    ++count;
+    median = middle->value;
+    table += tableRow({ result.model, format("%.3f", result.totalSeconds()), format("%.4f", yardstick->value),
+      format("%.1f", ratio->value) });
+  }
+  if (count == 0)
+    return "";
+  return "\n## Speed against the yardstick\n\n"
+         "`total` = the pipeline's stages counted in the time table's total (`map` included); `yardstick` = one "
+         "Eigen SimplicialLDLT factorization of the model's cotan Laplacian plus 21 solves (issue 24); ratio = "
+         "total / yardstick, target: median <= 25.\n\n" +
+    table + "\nmedian ratio over " + std::to_string(count) + " models: " + format("%.1f", median) + "\n";
+}
+
 } // namespace
+
+void addYardstickRatios(std::vector<ModelResult>& results)
+{
+  std::vector<double> ratios;
+  for (ModelResult& result : results)
+  {
+    const Figure* yardstick = findFigure(result, "yardstick_seconds");
+    if (result.ok() && yardstick && yardstick->value > 0.0)
+    {
+      ratios.push_back(result.totalSeconds() / yardstick->value);
+      setFigure(result.figures, "pipeline_per_yardstick", ratios.back());
+    }
+  }
+  if (ratios.empty())
+    return;
+  std::sort(ratios.begin(), ratios.end());
+  const std::size_t half = ratios.size() / 2;
+  const double median = ratios.size() % 2 ? ratios[half] : 0.5 * (ratios[half - 1] + ratios[half]);
+  // On every model with a ratio, so that the CSV, one row per model and
+  // stage, carries it too.
+  for (ModelResult& result : results)
+    if (findFigure(result, "pipeline_per_yardstick"))
+      setFigure(result.figures, "pipeline_per_yardstick_median", median);
+}
 
 std::string markdownReport(const std::vector<ModelResult>& results, const RunInfo& info)
 {
   return header(results, info) + "\n## Time per stage (s)\n\n" + timeTable(results) +
     "\n## Peak memory per stage (MB)\n\n" + memoryTable(results) + "\n## Figures per model\n\n" +
-    figureTable(results) + failures(results);
+    figureTable(results) + yardstickSection(results) + failures(results);
 }
 
 std::string csvReport(const std::vector<ModelResult>& results)

@@ -34,6 +34,12 @@ struct RunInfo
 ///        one column per stage), a peak-memory table and a figures table.
 std::string markdownReport(const std::vector<ModelResult>& results, const RunInfo& info);
 
+/// \brief Sets each model's figure `pipeline_per_yardstick`: its pipeline
+///        total (`ModelResult::totalSeconds()`) over its `yardstick_seconds`
+///        (issue 24's speed reference), for a model that has both, and on
+///        each of those `pipeline_per_yardstick_median`, the median ratio.
+void addYardstickRatios(std::vector<ModelResult>& results);
+
 /// \brief One CSV row per model and stage:
 ///        `model,vertices,triangles,stage,status,seconds,runs,stage_peak_mb,process_peak_mb`
 ///        then one column per figure name (see the file comment).

@@ -16,6 +16,7 @@
 #include <cmp/io/Landmarks.h>
 #include <cmp/io/MeshFile.h>
 #include <cmp/map/NetStraightener.h>
+#include <cmp/map/Straighten.h>
 #include <cmp/layout/NetTracer.h>
 #include <cmp/map/PatchParameterization.h>
 #include <cmp/remesh/SemiRegularRemesher.h>
@@ -86,14 +87,17 @@ struct ModelContext
   BaseDomainBuilderReport domainReport;   ///< `base_domain`: collapses, shape quality.
   TracedNet net;                          ///< `trace`: the net on the refined surface.
   NetTracerReport netReport;              ///< `trace`: length, retraces, splits.
-  StraightenedNet straight;               ///< `straighten`: the straightened net.
-  NetStraightenerReport straightReport;   ///< `straighten`: lengths, area variation, sweeps.
-  PatchParameterization parameterization; ///< `parameterize`: base-domain place of every vertex.
+  StraightenedNet straight;               ///< `straighten` to `map`: the final net (curves freed).
+  StraightenReport straightReport;        ///< `straighten` to `map`: lengths, area variation, sweeps, the map's figures.
+  PatchParameterization parameterization; ///< `straighten` to `map`: base-domain place of every vertex.
   SemiRegularMesh remesh;                 ///< `remesh`: the semi-regular connectivity.
   std::vector<SurfaceSample> remeshSamples; ///< `remesh`: where each remesh vertex lands on the surface.
   std::vector<Vec3> remeshPoints;         ///< `remesh`: the positions of those places.
   // Later stages add their outputs here (PCA, ...).
   FigureList figures;                     ///< Per-model numbers the stages report.
+  /// \brief Set by a stage with `Stage::parts`: the seconds of each part
+  ///        in its last run, in the order of `parts`.
+  std::vector<double> partSeconds;
 
   /// \brief The surface every stage after `read` works on: the subdivided
   ///        mesh when there is one, else the file's mesh.
@@ -125,7 +129,15 @@ struct Stage
   ///        of producing them (`remesh_distance`): timed and shown like the
   ///        others, but left out of the model's total.
   bool inTotal = true;
+  /// \brief Names of the parts the stage times itself (its `run` sets
+  ///        `ModelContext::partSeconds`, one per part): the table then shows
+  ///        one column per part, from the fastest run, and no column for the
+  ///        stage. Empty: the stage is one column.
+  std::vector<std::string> parts = {};
 };
+
+/// \brief The names the tables give `stage`: its parts, or its own name.
+std::vector<std::string> stageColumns(const Stage& stage);
 
 /// \brief The stages in pipeline order. Later stages append themselves here.
 const std::vector<Stage>& pipelineStages();

@@ -42,6 +42,7 @@ struct Options
   long minTriangles = 1000000;
   bool large = true;
   bool listOnly = false;
+  bool pipelineOnly = false; ///< Only the stages in the total, and the yardstick.
   std::vector<std::string> only; ///< Model names to run; empty = all.
 };
 
@@ -66,6 +67,8 @@ stages' figures such as the net length per sqrt(area)) plus a CSV beside them.
                         "pca" names the shape-analysis timing (100 models x 40,000
                         vertices, alignment + 10 principal components), which runs
                         after the models when --only is not given
+  --pipeline-only       run only the stages counted in `total` and `yardstick`
+                        (no measurement stages, no shape analysis unless --only pca)
   --list                print the models and exit
   --help                print this
 )";
@@ -108,6 +111,8 @@ int parseArguments(int argc, char** argv, Options& options)
       options.large = false;
     else if (arg == "--list")
       options.listOnly = true;
+    else if (arg == "--pipeline-only")
+      options.pipelineOnly = true;
     else if (arg == "--data" && hasValue)
       options.dataDir = argv[++i];
     else if (arg == "--output" && hasValue)
@@ -219,11 +224,24 @@ std::string remeshFiguresNote()
          "that distance computation alone (last run)";
 }
 
+/// \brief Says what the map stage's columns and the yardstick are.
+std::string mapFiguresNote()
+{
+  return "`straighten`, `parameterize` and `map` are the parts of one `straighten()` call, the Net Straightener's "
+         "default (edge straightening, the per-patch maps, then `freeCurves()`: the whole-surface map and the cut "
+         "along it), each timed inside that call (the fastest call's); `remesh` and the measurements after it work on "
+         "the map's result; map_applied = 1 where the curves were freed, map_distortion_before/_after = the global "
+         "map's mean symmetric Dirichlet energy over its isometric value, map_sweeps = its Gauss-Seidel sweeps; "
+         "`yardstick` (not counted in `total`) = one Eigen SimplicialLDLT factorization of the model's cotan "
+         "Laplacian (shifted by 1e-8 of its mean diagonal) plus 21 solves, yardstick_seconds = those alone (without "
+         "building the matrix), pipeline_per_yardstick = `total` / yardstick_seconds (issue 24: median <= 25)";
+}
+
 /// \brief Says what the `lower_stretch` measurement reports.
 std::string lowerStretchFiguresNote()
 {
-  return "`lower_stretch` (a measurement, not counted in `total`) parameterizes again with Net Straightener's "
-         "LowerStretch: lower_stretch_seconds = that parameterization alone, lower_stretch_smallest_area_ratio and "
+  return "`lower_stretch` (a measurement, not counted in `total`) straightens and parameterizes again with Net "
+         "Straightener's LowerStretch and FreeCurves off: lower_stretch_seconds = that parameterization alone, lower_stretch_smallest_area_ratio and "
          "lower_stretch_flipped_triangles as `parameterize` reports them, lower_stretch_hausdorff_per_diagonal_l5 "
          "(not on the large model) = the level-5 remesh's two-sided Hausdorff distance, to compare with "
          "hausdorff_per_diagonal_l5, lower_stretch_folded_before_repair_l5 and _after_repair_l5 = its folded "
@@ -296,8 +314,9 @@ void listModels(const std::vector<ModelSpec>& models, const std::optional<ModelS
 }
 
 /// \brief Writes and prints the report; returns the process exit code.
-int writeReport(const Options& options, const std::vector<ModelResult>& results, const RunInfo& info)
+int writeReport(const Options& options, std::vector<ModelResult> results, const RunInfo& info)
 {
+  addYardstickRatios(results);
   const std::string markdown = markdownReport(results, info);
   std::cout << markdown;
   const std::string csvPath = csvPathFor(options.output);
@@ -327,16 +346,23 @@ int run(const Options& options)
 
   const SharedInputs shared = options.listOnly ? SharedInputs{} : buildSharedInputs(models, info.notes);
   info.notes.push_back(traceFiguresNote());
+  info.notes.push_back(mapFiguresNote());
   info.notes.push_back(remeshFiguresNote());
 
   info.notes.push_back(lowerStretchFiguresNote());
   info.notes.push_back(waveletFiguresNote());
 
+  std::vector<Stage> stages;
+  for (const Stage& stage : pipelineStages())
+  {
+    if (!options.pipelineOnly || stage.inTotal || stage.name == "yardstick")
+      stages.push_back(stage);
+  }
   std::vector<ModelResult> results;
   for (const ModelSpec& spec : models)
   {
     if (selected(options, spec.name) && !options.listOnly)
-      results.push_back(runAndReport(spec, shared, pipelineStages(), options.repetitions));
+      results.push_back(runAndReport(spec, shared, stages, options.repetitions));
   }
   const std::optional<ModelSpec> large =
     largeWanted(options, models) ? largeModel(models, shared, results, options.minTriangles) : std::nullopt;
@@ -347,10 +373,10 @@ int run(const Options& options)
   }
   if (large && (selected(options, large->name) || contains(options.only, "large")))
   {
-    results.push_back(runAndReport(*large, shared, pipelineStages(), options.largeRepetitions));
+    results.push_back(runAndReport(*large, shared, stages, options.largeRepetitions));
     info.notes.push_back(largeNote(*large, results, options.minTriangles));
   }
-  const bool shapeAnalysis = selected(options, "pca");
+  const bool shapeAnalysis = options.pipelineOnly ? contains(options.only, "pca") : selected(options, "pca");
   if (shapeAnalysis)
   {
     std::cerr << "shape analysis: 100 models x 40,000 vertices\n";
