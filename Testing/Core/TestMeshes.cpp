@@ -55,6 +55,22 @@ TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b)
   return mesh;
 }
 
+TriangleMesh flatSquare(int n)
+{
+  TriangleMesh square;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      square.points.emplace_back(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n, 0.0);
+  const auto at = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+    {
+      square.triangles.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      square.triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  return square;
+}
+
 TriangleMesh bumpySphere(int levels)
 {
   TriangleMesh mesh = sphere(levels);

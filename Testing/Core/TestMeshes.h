@@ -32,6 +32,10 @@ TriangleMesh sphere(int levels);
 /// \brief Appends `b` to `a` as a separate component.
 TriangleMesh disjointUnion(const TriangleMesh& a, const TriangleMesh& b);
 
+/// \brief A flat square [-1, 1]^2 in the xy plane, `n` x `n` cells, each
+///        cut in two along the diagonal from (i, j) to (i + 1, j + 1).
+TriangleMesh flatSquare(int n);
+
 /// \brief A sphere of `levels` subdivisions with bumps of 20% of its radius.
 TriangleMesh bumpySphere(int levels);
 

@@ -1,4 +1,5 @@
 #include <cmp/numerics/SymmetricDirichletRelaxation.h>
+#include "TestMeshes.h"
 
 #include <gtest/gtest.h>
 
@@ -11,23 +12,6 @@ using namespace cmp;
 
 namespace
 {
-
-/// A flat square [-1, 1]^2 in the xy plane, `n` x `n` cells, each cut in two.
-TriangleMesh flatSquare(int n)
-{
-  TriangleMesh square;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      square.points.emplace_back(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n, 0.0);
-  const auto at = [n](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-    {
-      square.triangles.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
-      square.triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
-    }
-  return square;
-}
 
 /// The square's own xy coordinates: an isometry.
 Eigen::MatrixXd identityMap(const TriangleMesh& square)
@@ -130,7 +114,7 @@ Finger crushedFinger(double length, double push)
 
 TEST(SymmetricDirichletRelaxation, AnIsometryIsLeftWhereItIs)
 {
-  const TriangleMesh square = flatSquare(8);
+  const TriangleMesh square = test::flatSquare(8);
   Eigen::MatrixXd plane = identityMap(square);
   const Eigen::MatrixXd start = plane;
   EXPECT_NEAR(symmetricDirichletEnergy(square, plane), 4.0 * 4.0, 1e-12); // 4 x area
@@ -146,7 +130,7 @@ TEST(SymmetricDirichletRelaxation, UncrushesAMapAndKeepsItBijective)
   // norm, so the square's boundary stays put): a bijective map whose middle
   // triangles get a tiny share of the area, like a protrusion in a mean
   // value map. The isometry is the only minimum with that boundary.
-  const TriangleMesh square = flatSquare(16);
+  const TriangleMesh square = test::flatSquare(16);
   const std::vector<char> fixed = boundaryOfSquare(square);
   const Eigen::MatrixXd isometry = identityMap(square);
   Eigen::MatrixXd plane = isometry;
@@ -196,7 +180,7 @@ TEST(SymmetricDirichletRelaxation, UncrushesAnAnisotropicMapOnACurvedSurface)
   // along y only: the triangles' images are needles near y = 0, so the
   // relaxation must stretch them anisotropically, and every step must stay
   // flip-free on the way.
-  TriangleMesh saddle = flatSquare(16);
+  TriangleMesh saddle = test::flatSquare(16);
   for (Vec3& p : saddle.points)
     p.z() = 0.3 * (p.x() * p.x() - p.y() * p.y());
   const std::vector<char> fixed = boundaryOfSquare(saddle);
@@ -270,7 +254,7 @@ TEST(SymmetricDirichletRelaxation, ProgressiveStepsRelaxACrushedFingerFurther)
 
 TEST(SymmetricDirichletRelaxation, RefusesBadInputNamingTheProblem)
 {
-  const TriangleMesh square = flatSquare(4);
+  const TriangleMesh square = test::flatSquare(4);
   const std::vector<char> fixed = boundaryOfSquare(square);
   const auto refused = [&](Eigen::MatrixXd plane, const std::vector<char>& mask, const std::string& expected) {
     const Status status = relaxSymmetricDirichlet(square, mask, plane);
