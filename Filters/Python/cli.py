@@ -40,6 +40,7 @@ will do); without one they are skipped, which is said and is no failure.
 
 import os
 import sys
+import time
 
 from vtkmodules.vtkCommonCore import vtkLogger
 
@@ -65,7 +66,7 @@ from .stages import (
     trace_net,
 )
 from .summary import print_summary
-from .vtkio import StageError, write_polydata
+from .vtkio import StageError, keep_timing_arrays, write_polydata
 
 
 EXIT_NO_BASE_DOMAIN = 3
@@ -74,6 +75,9 @@ EXIT_NO_COLLECTION = 4
 
 def main(argv=None):
     args = parse_arguments(sys.argv[1:] if argv is None else argv)
+    started = time.time()
+    clock = time.perf_counter()
+    keep_timing_arrays(args.timing_arrays)
     # Errors are collected per model and reported once; the executive's
     # generic "returned failure" log lines would only repeat them.
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
@@ -100,7 +104,8 @@ def main(argv=None):
     for index, model in enumerate(models):
         print("[%d/%d] %s: reading" % (index + 1, len(models), model.name), flush=True)
         try:
-            run_model_stage(model, "read", lambda: read_landmarked_surface(model), ["surface"])
+            run_model_stage(model, "read", lambda: read_landmarked_surface(model), ["surface"],
+                            args.model_timeout)
         except StageError as error:
             model.fail(error)
 
@@ -109,7 +114,7 @@ def main(argv=None):
         if args.base_domain is not None:
             domain = polydata_from_text(run_in_child("read", "base domain",
                                                      lambda: polydata_to_text(load_base_domain(args.base_domain)),
-                                                     "reading the base domain"))
+                                                     "reading the base domain", args.model_timeout))
             source = args.base_domain
         else:
             model = models[args.base_domain_from]
@@ -143,7 +148,7 @@ def main(argv=None):
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
 
         try:
-            run_model_stage(model, "process", process, ["parameterized", "curves"])
+            run_model_stage(model, "process", process, ["parameterized", "curves"], args.model_timeout)
         except StageError as error:
             model.fail(error)
             print("%s FAILED: %s" % (step, model.report["error"]), flush=True)
@@ -199,7 +204,9 @@ def main(argv=None):
     failed = [m.name for m in models if m.report.get("status") != "ok"]
     report["failed"] = failed
     try:
-        written_report.write(report, args.output)
+        written_report.write(report, args.output,
+                             {"started": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime(started)),
+                              "seconds": round(time.perf_counter() - clock, 4)})
     except OSError as error:
         print("consistent-remesh: cannot write the report: %s" % error, file=sys.stderr)
         return 1
