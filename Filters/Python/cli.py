@@ -26,16 +26,23 @@ Usage:
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
                     [--adaptive-tolerance T] [--relax-samples N] [--transfer-from NAME] [--details-from NAME] [--pca K]
                     [--blend] [--blend-weights W0,W1,...] [--blend-alignment MODE]
-                    [--no-render] [--view-up AXIS] --output DIR
+                    [--no-render] [--view-up AXIS] [--model-timeout SECONDS] [--timing-arrays]
+                    --output DIR
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others (its reading and its tracing
-and straightening run in child processes, so a crash fails it alone); the
+and straightening run in child processes, so a crash fails it alone, and so
+does a child still running after --model-timeout, an hour by default); the
 exit status is 1 if any model failed or a requested stage failed, 2 for
 a usage error, 3 if the base domain could not be made and 4 if a collection's meshes cannot be
 had (the package is not installed or has changed). If the collection's remeshing fails, every
 model taking part in it fails. Pictures need an X display (xvfb-run -a
 will do); without one they are skipped, which is said and is no failure.
+
+Every time goes to DIR/timings.json and only there: the other files of two
+runs of one command on the same inputs are the same byte for byte (the
+.vtp and .vtm files leave out the filters' timing field arrays unless
+--timing-arrays).
 """
 
 import os
