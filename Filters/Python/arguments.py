@@ -21,6 +21,11 @@ MAX_SAMPLE_RELAXATION = 32  # the plugin's range; more rounds gain nothing measu
 # run one model at a time would each move them their own way).
 DEFAULT_SAMPLE_RELAXATION = 4
 WEIGHT_SUM_TOLERANCE = 1e-9  # vtkCMPShapeBlend's
+# How long one model's child process (its reading, or its tracing and
+# straightening) may run before it is killed and the model fails: an hour,
+# far above the minutes the largest models here take on 2 busy cores, so
+# that only a hang reaches it.
+DEFAULT_MODEL_TIMEOUT = 3600.0
 
 
 def parse_arguments(argv):
@@ -90,6 +95,14 @@ def parse_arguments(argv):
     parser.add_argument("--view-up", metavar="AXIS",
                         help="the models' up axis for the pictures: +y (default), -y, +z, -z, +x or -x")
     parser.add_argument("--output", help="output folder (required with --mesh; default ./results for a collection)")
+    parser.add_argument("--model-timeout", type=float, default=DEFAULT_MODEL_TIMEOUT, metavar="SECONDS",
+                        help="kill a model's reading, or its tracing and straightening, after SECONDS and fail the "
+                        "model \"timed out after SECONDS s\" (default %g, an hour: far above what a model of "
+                        "a million triangles takes; 0: no limit)" % DEFAULT_MODEL_TIMEOUT)
+    parser.add_argument("--timing-arrays", action="store_true",
+                        help="keep the filters' timing field arrays (TotalSeconds and the like) in the .vtp and "
+                        ".vtm files written; without it they are left out, so that every file but timings.json "
+                        "is the same byte for byte from run to run")
     args = parser.parse_args(_attach_negative_weights(argv))
     args.collection_data = None
     if args.collection is not None and (args.mesh or args.landmarks):
@@ -103,6 +116,8 @@ def parse_arguments(argv):
         parser.error("the following arguments are required: --output")
     if args.level is None:
         args.level = DEFAULT_LEVEL
+    if not args.model_timeout >= 0:
+        parser.error("--model-timeout %s: give a number of seconds, 0 or more (0: no limit)" % args.model_timeout)
     if args.relax_samples is None:
         args.relax_samples = DEFAULT_SAMPLE_RELAXATION
     if args.view_up is None:

@@ -115,3 +115,9 @@ WEIGHTS_ARRAY = "Weights"
 
 # consistent-remesh's own: the PCA picture's per-point length of a mode.
 DISPLACEMENT_ARRAY = "Displacement"
+
+# The field arrays that hold how long a filter took: they differ from run to
+# run, so consistent-remesh leaves them out of the files it writes (unless
+# --timing-arrays) and puts its timings in timings.json instead.
+TIMING_FIELDS = frozenset(value for name, value in list(globals().items())
+                          if name.endswith("_SECONDS_FIELD"))

@@ -26,20 +26,28 @@ Usage:
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
                     [--adaptive-tolerance T] [--relax-samples N] [--transfer-from NAME] [--details-from NAME] [--pca K]
                     [--blend] [--blend-weights W0,W1,...] [--blend-alignment MODE]
-                    [--no-render] [--view-up AXIS] --output DIR
+                    [--no-render] [--view-up AXIS] [--model-timeout SECONDS] [--timing-arrays]
+                    --output DIR
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others (its reading and its tracing
-and straightening run in child processes, so a crash fails it alone); the
+and straightening run in child processes, so a crash fails it alone, and so
+does a child still running after --model-timeout, an hour by default); the
 exit status is 1 if any model failed or a requested stage failed, 2 for
 a usage error, 3 if the base domain could not be made and 4 if a collection's meshes cannot be
 had (the package is not installed or has changed). If the collection's remeshing fails, every
 model taking part in it fails. Pictures need an X display (xvfb-run -a
 will do); without one they are skipped, which is said and is no failure.
+
+Every time goes to DIR/timings.json and only there: the other files of two
+runs of one command on the same inputs are the same byte for byte (the
+.vtp and .vtm files leave out the filters' timing field arrays unless
+--timing-arrays).
 """
 
 import os
 import sys
+import time
 
 from vtkmodules.vtkCommonCore import vtkLogger
 
@@ -65,7 +73,7 @@ from .stages import (
     trace_net,
 )
 from .summary import print_summary
-from .vtkio import StageError, write_polydata
+from .vtkio import StageError, keep_timing_arrays, write_polydata
 
 
 EXIT_NO_BASE_DOMAIN = 3
@@ -74,6 +82,9 @@ EXIT_NO_COLLECTION = 4
 
 def main(argv=None):
     args = parse_arguments(sys.argv[1:] if argv is None else argv)
+    started = time.time()
+    clock = time.perf_counter()
+    keep_timing_arrays(args.timing_arrays)
     # Errors are collected per model and reported once; the executive's
     # generic "returned failure" log lines would only repeat them.
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
@@ -100,7 +111,8 @@ def main(argv=None):
     for index, model in enumerate(models):
         print("[%d/%d] %s: reading" % (index + 1, len(models), model.name), flush=True)
         try:
-            run_model_stage(model, "read", lambda: read_landmarked_surface(model), ["surface"])
+            run_model_stage(model, "read", lambda: read_landmarked_surface(model), ["surface"],
+                            args.model_timeout)
         except StageError as error:
             model.fail(error)
 
@@ -109,7 +121,7 @@ def main(argv=None):
         if args.base_domain is not None:
             domain = polydata_from_text(run_in_child("read", "base domain",
                                                      lambda: polydata_to_text(load_base_domain(args.base_domain)),
-                                                     "reading the base domain"))
+                                                     "reading the base domain", args.model_timeout))
             source = args.base_domain
         else:
             model = models[args.base_domain_from]
@@ -143,7 +155,7 @@ def main(argv=None):
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
 
         try:
-            run_model_stage(model, "process", process, ["parameterized", "curves"])
+            run_model_stage(model, "process", process, ["parameterized", "curves"], args.model_timeout)
         except StageError as error:
             model.fail(error)
             print("%s FAILED: %s" % (step, model.report["error"]), flush=True)
@@ -199,7 +211,9 @@ def main(argv=None):
     failed = [m.name for m in models if m.report.get("status") != "ok"]
     report["failed"] = failed
     try:
-        written_report.write(report, args.output)
+        written_report.write(report, args.output,
+                             {"started": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime(started)),
+                              "seconds": round(time.perf_counter() - clock, 4)})
     except OSError as error:
         print("consistent-remesh: cannot write the report: %s" % error, file=sys.stderr)
         return 1

@@ -10,15 +10,21 @@ costs no start-up; it sends back its result pickled through a pipe, with
 surfaces as VTK XML text. VTK runs its Sequential SMP backend here and the
 core starts no threads, so a fork copies no thread that holds a lock.
 
+A child that has not finished after the timeout (consistent-remesh
+--model-timeout) is killed, and the stage fails with "timed out after N s".
+
 For the tests, CMP_TEST_CRASH=STAGE:NAME:SIGNAL[,...] makes the child of
 model NAME's stage STAGE (read or process) kill itself with SIGNAL (for
 example SIGSEGV or SIGABRT; SIGSEGV for a name the signal module does not
-know) before it starts: a crash that no input file is needed for."""
+know) before it starts: a crash that no input file is needed for. SIGNAL
+HANG makes it sleep for a day instead: a hang."""
 
 import os
 import pickle
+import select
 import signal
 import sys
+import time
 import traceback
 
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
@@ -66,6 +72,8 @@ def _crash_for_the_test(stage, name):
     for entry in os.environ.get("CMP_TEST_CRASH", "").split(","):
         parts = entry.strip().split(":")
         if len(parts) == 3 and parts[0] == stage and parts[1] == name:
+            if parts[2] == "HANG":
+                time.sleep(86400)
             os.kill(os.getpid(), getattr(signal, parts[2], signal.SIGSEGV))
 
 
@@ -95,12 +103,30 @@ def _child(write_end, stage, name, function):
             os._exit(code)
 
 
-def run_in_child(stage, name, function, doing):
+def _read_until(read_end, deadline):
+    """Everything the child writes into `read_end` until it closes it, or
+    None if `deadline` (time.monotonic(); None: no deadline) passes first."""
+    chunks = []
+    with os.fdopen(read_end, "rb", buffering=0) as pipe:
+        while True:
+            if deadline is not None:
+                left = deadline - time.monotonic()
+                if left <= 0 or not select.select([pipe], [], [], left)[0]:
+                    return None
+            chunk = pipe.read(1 << 20)
+            if not chunk:
+                return b"".join(chunks)
+            chunks.append(chunk)
+
+
+def run_in_child(stage, name, function, doing, timeout=0):
     """Runs `function()` in a forked child and returns its result, which
     must pickle. A StageError in the child is raised here with its message
     (and its `extra`, see `with_extra`); any other exception becomes a
     StageError naming it; a child that dies raises a StageError "crashed
-    while DOING: ..." saying how. `stage` and `name` are for CMP_TEST_CRASH."""
+    while DOING: ..." saying how, and one still running after `timeout`
+    seconds (0: no limit) is killed and raises "timed out after N s while
+    DOING". `stage` and `name` are for CMP_TEST_CRASH."""
     sys.stdout.flush()
     sys.stderr.flush()
     read_end, write_end = os.pipe()
@@ -109,8 +135,12 @@ def run_in_child(stage, name, function, doing):
         os.close(read_end)
         _child(write_end, stage, name, function)
     os.close(write_end)
-    with os.fdopen(read_end, "rb") as pipe:
-        data = pipe.read()
+    data = _read_until(read_end, time.monotonic() + timeout if timeout > 0 else None)
+    if data is None:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+        raise StageError("timed out after %g s while %s: the process doing it was killed (--model-timeout)"
+                         % (timeout, doing))
     _, status = os.waitpid(pid, 0)
     if data:
         try:
@@ -136,13 +166,14 @@ def run_in_child(stage, name, function, doing):
 MODEL_STAGES = {"read": "reading and checking its files", "process": "tracing and straightening its net"}
 
 
-def run_model_stage(model, stage, function, surfaces):
+def run_model_stage(model, stage, function, surfaces, timeout=0):
     """`function()`, one stage of `model` (a stages.Model), in a child
     process: afterwards model.report and the Model attributes named in
     `surfaces` ("surface", "parameterized", "curves") are what the child
-    left them. `stage` is a key of MODEL_STAGES. Raises StageError if the
-    stage failed or the child crashed; model.report then keeps the figures
-    the child had written before a StageError."""
+    left them. `stage` is a key of MODEL_STAGES; `timeout` as for
+    run_in_child. Raises StageError if the stage failed, the child crashed
+    or timed out; model.report then keeps the figures the child had written
+    before a StageError."""
     def child():
         try:
             function()
@@ -151,7 +182,7 @@ def run_model_stage(model, stage, function, surfaces):
         return model.report, [polydata_to_text(getattr(model, attribute)) for attribute in surfaces]
 
     try:
-        report, texts = run_in_child(stage, model.name, child, MODEL_STAGES[stage])
+        report, texts = run_in_child(stage, model.name, child, MODEL_STAGES[stage], timeout)
     except StageError as error:
         if getattr(error, "extra", None) is not None:
             model.report = error.extra

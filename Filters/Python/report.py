@@ -5,16 +5,20 @@ The last two are made from one list of blocks (headings, paragraphs, tables,
 pictures) built from the run's report.json content, so they say the same.
 The pictures are the PNGs beside them, linked by file name, so the folder
 can be moved or shared as a whole.
+
+How long things took, and when the run was, go to timings.json alone:
+report.json, report.md and report.html are then the same byte for byte
+from run to run of one command on the same inputs, and can be diffed.
 """
 
 import html
 import json
 import os
 import shlex
-import time
 from urllib.parse import quote
 
-FILES = ("report.json", "report.md", "report.html")
+TIMINGS_FILE = "timings.json"
+FILES = ("report.json", "report.md", "report.html", TIMINGS_FILE)
 
 
 class Heading:
@@ -39,10 +43,41 @@ class Picture:
         self.caption = caption
 
 
-def write(report, output_folder):
-    """Writes report.json, report.md and report.html into `output_folder`."""
+def is_timing(key):
+    """Whether a report key holds a time: "seconds", "..._seconds"."""
+    return key == "seconds" or key.endswith("_seconds")
+
+
+def split_timings(report):
+    """(the report without its timings, the timings): every "seconds" or
+    "..._seconds" entry, at any depth, moves to the second, under the same
+    keys as it had in the first."""
+    results, timings = {}, {}
+    for key, value in report.items():
+        if is_timing(key):
+            timings[key] = value
+        elif isinstance(value, dict):
+            results[key], inner = split_timings(value)
+            if inner:
+                timings[key] = inner
+        else:
+            results[key] = value
+    return results, timings
+
+
+def write(report, output_folder, run=None):
+    """Writes report.json, report.md and report.html into `output_folder`,
+    from `report` without its timings, and timings.json with them and
+    `run` (when the run started, how long it took) under "run"."""
+    report, timings = split_timings(report)
+    if run is not None:
+        timings = dict({"run": run}, **timings)
     with open(os.path.join(output_folder, FILES[0]), "w") as out:
         json.dump(report, out, indent=2)
+        out.write("\n")
+    with open(os.path.join(output_folder, TIMINGS_FILE), "w") as out:
+        json.dump(timings, out, indent=2)
+        out.write("\n")
     blocks = build(report)
     with open(os.path.join(output_folder, FILES[1]), "w") as out:
         out.write(markdown(blocks))
@@ -61,8 +96,9 @@ def build(report):
     data = report.get("collection")
     if data:
         blocks.append(Paragraph("%s. The meshes were unpacked to %s." % (data["description"], data["meshes"])))
-    blocks.append(Paragraph("Command: `%s`, run on %s." % (shlex.join(report.get("command", [])),
-                                                            time.strftime("%Y-%m-%d %H:%M"))))
+    blocks.append(Paragraph("Command: `%s`. How long each stage took, and when the run was, is in %s (every "
+                            "other file of the run is the same for the same command and inputs)."
+                            % (shlex.join(report.get("command", [])), TIMINGS_FILE)))
     blocks += _summary(report)
     blocks += _models(report)
     pictures = report.get("renders", {})
@@ -97,8 +133,8 @@ def _summary(report):
         if rounds:
             adaptive += ", samples relaxed (%d round%s)" % (rounds, "" if rounds == 1 else "s")
         lines.append("%d of %d models remeshed with one connectivity: level %d%s, %d vertices and %d triangles "
-                     "each, in %.2f s." % (len(ok), len(models), remesh["level"], adaptive, remesh["vertices"],
-                                           remesh["triangles"], remesh["seconds"]))
+                     "each." % (len(ok), len(models), remesh["level"], adaptive, remesh["vertices"],
+                                remesh["triangles"]))
     elif "error" in remesh:
         lines.append("Remeshing the collection failed: %s." % remesh["error"])
     domain = report.get("base_domain", {})
@@ -108,8 +144,6 @@ def _summary(report):
         angle = ", smallest angle %.2f°" % domain["min_angle_degrees"] if "min_angle_degrees" in domain else ""
         lines.append("Base domain: %d vertices, %d triangles, %d edges%s (%s)."
                      % (domain["vertices"], domain["triangles"], domain["edges"], angle, domain["source"]))
-    seconds = sum(sum(model["seconds"].values()) for model in models.values())
-    lines.append("Reading, tracing, straightening and remeshing took %.1f s over all models." % seconds)
     if report.get("failed"):
         lines.append("**Failed:** %s." % ", ".join(report["failed"]))
     return [Heading("Summary")] + [Paragraph(line) for line in lines]
@@ -118,8 +152,7 @@ def _summary(report):
 def _models(report):
     header = ["model", "vertices", "triangles", "net / √area, traced", "straightened", "flipped parameter triangles",
               "Hausdorff / diagonal", "farthest point: nearest landmark (distance / diagonal)",
-              "flipped remesh triangles (nearest landmark: how many)", "flipped by the centroid criterion", "seconds",
-              "result"]
+              "flipped remesh triangles (nearest landmark: how many)", "flipped by the centroid criterion", "result"]
     rows = []
     for name, model in report["models"].items():
         remesh = model.get("remesh", {})
@@ -133,7 +166,6 @@ def _models(report):
             _farthest(remesh),
             _folds(remesh),
             remesh.get("centroid_flips", "-"),
-            "%.2f" % sum(model["seconds"].values()),
             "ok" if model.get("status") == "ok" else "failed: %s" % model.get("error", ""),
         ])
     return [Heading("Models"), Table(header, rows)]

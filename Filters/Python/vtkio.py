@@ -7,7 +7,22 @@ import csv
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkFieldData, vtkMultiBlockDataSet
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter, vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+
+from .array_names import TIMING_FIELDS
+
+# Whether the files written keep the filters' timing field arrays
+# (array_names.TIMING_FIELDS). Off, the default, a run's files are the same
+# byte for byte from run to run; consistent-remesh --timing-arrays turns it on.
+_keep_timing_arrays = False
+
+
+def keep_timing_arrays(keep):
+    """Whether write_polydata and write_multiblock keep the timing field
+    arrays (off by default)."""
+    global _keep_timing_arrays
+    _keep_timing_arrays = bool(keep)
 
 
 class StageError(Exception):
@@ -59,12 +74,48 @@ def _write_xml(writer, data, path):
 
 
 def write_polydata(polydata, path):
-    _write_xml(vtkXMLPolyDataWriter(), polydata, path)
+    _write_xml(vtkXMLPolyDataWriter(), polydata if _keep_timing_arrays else without_timings(polydata), path)
 
 
 def write_multiblock(data, path):
     """Writes PATH.vtm and its pieces in a folder PATH without the extension."""
-    _write_xml(vtkXMLMultiBlockDataWriter(), data, path)
+    _write_xml(vtkXMLMultiBlockDataWriter(), data if _keep_timing_arrays else without_timings(data), path)
+
+
+def without_timings(data):
+    """`data` without the field arrays of TIMING_FIELDS, for writing; `data`
+    itself is left as it is. A data set that has some comes back as a
+    shallow copy (arrays shared), a multiblock as a new one around such
+    copies of its blocks, names kept; anything else as it is."""
+    if data is None:
+        return None
+    if isinstance(data, vtkMultiBlockDataSet):
+        copy = vtkMultiBlockDataSet()
+        copy.SetNumberOfBlocks(data.GetNumberOfBlocks())
+        for index in range(data.GetNumberOfBlocks()):
+            copy.SetBlock(index, without_timings(data.GetBlock(index)))
+            if data.HasMetaData(index):
+                copy.GetMetaData(index).Copy(data.GetMetaData(index))
+        copy.SetFieldData(_fields_without_timings(data.GetFieldData()))
+        return copy
+    fields = data.GetFieldData()
+    if fields is None or not any(fields.GetAbstractArray(i).GetName() in TIMING_FIELDS
+                                 for i in range(fields.GetNumberOfArrays())):
+        return data
+    copy = data.NewInstance()
+    copy.ShallowCopy(data)
+    copy.SetFieldData(_fields_without_timings(fields))
+    return copy
+
+
+def _fields_without_timings(fields):
+    kept = vtkFieldData()
+    if fields is not None:
+        for index in range(fields.GetNumberOfArrays()):
+            array = fields.GetAbstractArray(index)
+            if array.GetName() not in TIMING_FIELDS:
+                kept.AddArray(array)
+    return kept
 
 
 def write_table(table, path):

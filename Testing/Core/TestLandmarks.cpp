@@ -103,6 +103,51 @@ TEST(Landmarks, ReportsBadFiles)
   expectError(readLandmarkFile("/nonexistent.vts", mesh, {}, landmarks), "cannot open '/nonexistent.vts'");
 }
 
+// Issue 26: a line with a field more than its format has was accepted, the
+// field ignored; such a file is of another format or damaged.
+TEST(Landmarks, RejectsLinesWithExtraFields)
+{
+  const TriangleMesh mesh = test::octahedron();
+  LandmarkList landmarks;
+  expectError(readLandmarkFile(writeTempFile("extra.vts", "4 0 0 1\n1 -1 0 0 7\n"), mesh, {}, landmarks),
+    "extra.vts:2: expected 'vertex_id x y z', found '7' after them");
+  expectError(readLandmarkFile(writeTempFile("word.vts", "4 0 0 1 nose\n"), mesh, {}, landmarks),
+    "word.vts:1: expected 'vertex_id x y z', found 'nose' after them");
+  expectError(readLandmarkFile(writeTempFile("extra.pinned", "lk 4\nlk 0 5\n"), mesh, {}, landmarks),
+    "extra.pinned:2: expected 'lk ID' or 'ID', found 'lk 0 5'");
+  expectError(readLandmarkFile(writeTempFile("extra.txt", "4\n0 1\n"), mesh, {}, landmarks),
+    "extra.txt:2: expected 'lk ID' or 'ID', found '0 1'");
+  expectError(readLandmarkFile(writeTempFile("extra.csv", "x,y,z\n1,0,0\n0,1,0,1\n"), mesh, {}, landmarks),
+    "extra.csv:3: expected 'x,y,z', found '1' after them");
+  // Blanks, a CR and comments after the fields are no fields.
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("blank.vts", "4 0 0 1  \r\n1 -1 0 0 # tip\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 4, 1 }));
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("blank.pinned", "lk 4 \r\nlk 0\t# nose\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 4, 0 }));
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("blank.csv", "1,0,0 \r\n0,1,0\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 0, 2 }));
+}
+
+// Issue 26: some damaged .pinned files failed with an empty message. Every
+// damage here must fail with a message that names the file.
+TEST(Landmarks, DamagedPinnedFilesFailWithAMessage)
+{
+  const TriangleMesh mesh = test::octahedron();
+  const std::string damaged[] = { "", "\n\n", "lk\n", "lk \n", "lk -\n", "lk 4\nlk", "lk 4\nl", "lk 4\nk 0\n",
+    "lk 99999999999999999999999\n", "lk -1\n", "lk 1e3\n", "lk 0x4\n", "lk 4\nlk 4\n", std::string("lk 4\0\n", 6),
+    "\xff\xfe\x00\x01", "lk 4\r\nlk 5\r\nlk\r\n", "lk\t\t\n", "lklk 4\n", "lk 2147483648\n" };
+  int index = 0;
+  for (const std::string& text : damaged)
+  {
+    const std::string name = "damaged" + std::to_string(index++) + ".pinned";
+    LandmarkList landmarks;
+    const Status status = readLandmarkFile(writeTempFile(name, text), mesh, {}, landmarks);
+    EXPECT_FALSE(status.ok()) << name;
+    EXPECT_NE(status.message().find(name), std::string::npos) << name << ": '" << status.message() << "'";
+    EXPECT_GT(status.message().size(), test::tempPath(name).size() + 4) << name << ": '" << status.message() << "'";
+  }
+}
+
 TEST(Landmarks, ValidatesCountAndRange)
 {
   expectError(validateLandmarks({ 0, 1, 2 }, 6, 4), "3 landmarks but 4 are expected");

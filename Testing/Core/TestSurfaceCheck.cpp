@@ -96,6 +96,17 @@ TEST(SurfaceCheck, RejectsInconsistentOrientation)
   expectDefect(mesh, SurfaceDefect::InconsistentOrientation, "inconsistent orientation: 3 edges");
 }
 
+// Issue 26: a fin, a triangle hung on an edge of a closed surface, was
+// reported only as "open surface" by the boundary edges it leaves.
+TEST(SurfaceCheck, ReportsAFinAsANonManifoldEdge)
+{
+  TriangleMesh mesh = octahedron();
+  mesh.points.emplace_back(2, 2, 0);
+  mesh.triangles.push_back({ 0, 2, 6 }); // edge (0, 2) now has three triangles
+  expectDefect(mesh, SurfaceDefect::NonManifoldEdge,
+    "1 non-manifold edges, e.g. edge (0, 2) shared by 3 triangles (and 2 boundary edges, e.g. edge");
+}
+
 TEST(SurfaceCheck, RejectsNonManifoldVertex)
 {
   // Two tetrahedra touching at one vertex (a bow tie).

@@ -112,6 +112,14 @@ TEST(InputCheck, NamesEachSurfaceDefect)
   std::string nan = octahedronOFF();
   nan.replace(nan.find("0 1 0\n"), 6, "nan 1 0\n");
   expectFailure(check(surfaceFromOFF("nan.off", nan)), "point 2 has a NaN");
+  // A fin (a triangle hung on edge (0, 2) of the closed octahedron) is a
+  // non-manifold edge, not just an open surface (issue 26).
+  std::string fin = octahedronOFF();
+  fin.replace(fin.find("6 8 0\n"), 6, "7 9 0\n");
+  fin.replace(fin.find("3 0 2 4\n"), 0, "2 2 0\n");
+  fin += "3 0 2 6\n";
+  expectFailure(check(surfaceFromOFF("fin.off", fin)),
+    "1 non-manifold edges, e.g. edge (0, 2) shared by 3 triangles (and 2 boundary edges");
   vtkNew<vtkPolyData> empty;
   expectFailure(check(empty), "empty surface");
   vtkSmartPointer<vtkPolyData> flipped = surfaceFromOFF("flip.off", octahedronOFF());

@@ -4,7 +4,8 @@
                      [--pictures [--keep-pictures DIR]] CASE
 
 CASE is one of: shipped-examples, collection, given-base-domain,
-failure-isolation, crash-isolation, argument-errors, base-domain-mismatch. Every case but
+failure-isolation, crash-isolation, model-timeout, reproducible-files,
+argument-errors, base-domain-mismatch. Every case but
 argument-errors and shipped-examples needs the shared data (shipped-examples
 takes the project's Data folder). Each run writes into a fresh temporary
 folder.
@@ -77,7 +78,22 @@ def run_cli(arguments, output=None, display=None, environment=None, folder=None)
     if output and os.path.exists(os.path.join(output, "report.json")):
         with open(os.path.join(output, "report.json")) as f:
             report = json.load(f)
+        # The times are in timings.json (reproducible files, issue 26): put
+        # them back where the checks look for them.
+        timings = os.path.join(output, "timings.json")
+        check(os.path.isfile(timings), "report.json without timings.json in " + output)
+        with open(timings) as f:
+            _merge(report, json.load(f))
     return result.returncode, result.stdout, result.stderr, report
+
+
+def _merge(report, timings):
+    """`timings` (timings.json's content) put into `report` under its keys."""
+    for key, value in timings.items():
+        if isinstance(value, dict) and isinstance(report.get(key), dict):
+            _merge(report[key], value)
+        else:
+            report[key] = value
 
 
 def model_arguments(pairs):
@@ -1164,6 +1180,84 @@ def case_crash_isolation(tmp):
         check_contains(report["models"][name].get("error", ""), "no base domain", "error of " + name)
 
 
+def case_model_timeout(tmp):
+    """--model-timeout: a model's child that hangs (CMP_TEST_CRASH ... HANG)
+    is killed after the timeout and the model fails "timed out after N s",
+    the other models finish and the report is written; and a timeout too
+    short for a real model's work fails that model the same way."""
+    examples = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data", "examples")
+    pairs = [(os.path.join(examples, m), os.path.join(examples, l))
+             for m, l in (("blob.off", "blob.vts"), ("capsule.obj", "capsule.pinned"), ("peanut.off", "peanut.csv"))]
+    timeout = "%g" % (30 * timeout_factor())
+    out = os.path.join(tmp, "out-hang")
+    status, stdout, stderr, report = run_cli(
+        model_arguments(pairs) + ["--level", "1", "--no-render", "--model-timeout", timeout], out,
+        environment={"CMP_TEST_CRASH": "process:capsule:HANG"})
+    check(report is not None, "no report.json after a hung model (status %d, stderr: %s)" % (status, stderr))
+    check_equal(status, 1, "exit status with a hung model (stderr: %s)" % stderr)
+    check_equal(report["failed"], ["capsule"], "failed models")
+    check_contains(report["models"]["capsule"].get("error", ""),
+                   "timed out after %s s while tracing and straightening its net" % timeout, "error of capsule")
+    for name in ("blob", "peanut"):
+        check_equal(report["models"][name].get("status"), "ok", "status of " + name)
+    check_remeshed(out, report, stdout, ["blob", "peanut"], 1, landmarks=6)
+
+    # Half a second is far too short for 381's straightening (tens of
+    # seconds): the model fails with the timeout, the report is written.
+    out = os.path.join(tmp, "out-short")
+    status, stdout, stderr, report = run_cli(
+        model_arguments([(shrec("381", "off"), shrec("381", "vts"))])
+        + ["--base-domain-from", "0", "--level", "1", "--no-render", "--model-timeout", "0.5"], out)
+    check(report is not None, "no report.json after a timeout (status %d, stderr: %s)" % (status, stderr))
+    check_equal(status, 1, "exit status with a model timed out (stderr: %s)" % stderr)
+    check_equal(report["failed"], ["381"], "failed models")
+    check_contains(report["models"]["381"].get("error", ""), "timed out after 0.5 s while", "error of 381")
+    check_contains(stdout, "timed out after 0.5 s", "the summary")
+
+    # A negative timeout is a usage error.
+    status, _, stderr, _ = run_cli(model_arguments(pairs) + ["--model-timeout", "-1"], os.path.join(tmp, "out-bad"))
+    check_equal(status, 2, "exit status of --model-timeout -1")
+    check_contains(stderr, "--model-timeout -1", "usage error")
+
+
+def case_reproducible_files(tmp):
+    """Two runs of one command on two real models write the same files byte
+    for byte, but for timings.json, which has every timing; the .vtp files
+    carry no timing field arrays unless --timing-arrays asks for them."""
+    import filecmp
+
+    arguments = model_arguments([(shrec("381", "off"), shrec("381", "vts")), (shrec("385", "off"), shrec("385", "vts"))])
+    arguments += ["--base-domain-from", "0", "--level", "2", "--no-render"]
+    out = os.path.join(tmp, "out")  # the same --output both times: report.json has the command
+    runs = []
+    for run in ("first", "second"):
+        status, stdout, stderr, report = run_cli(arguments, out)
+        check_equal(status, 0, "%s run: exit status (stderr: %s)" % (run, stderr))
+        kept = os.path.join(tmp, run)
+        os.rename(out, kept)
+        runs.append(kept)
+
+    def files(folder):
+        return sorted(os.path.relpath(os.path.join(root, name), folder)
+                      for root, _, names in os.walk(folder) for name in names)
+
+    check_equal(files(runs[0]), files(runs[1]), "the files the two runs wrote")
+    check("timings.json" in files(runs[0]), "no timings.json")
+    differing = [name for name in files(runs[0]) if name != "timings.json"
+                 and not filecmp.cmp(os.path.join(runs[0], name), os.path.join(runs[1], name), shallow=False)]
+    check_equal(differing, [], "files that differ between two runs")
+    with open(os.path.join(runs[0], "timings.json")) as f:
+        timings = json.load(f)
+    check("started" in timings.get("run", {}) and "seconds" in timings["run"], "timings.json has no run: %s" % timings)
+    check("straighten" in timings["models"]["381"]["seconds"], "timings.json has no stage times: %s" % timings)
+    with open(os.path.join(runs[0], "report.json")) as f:
+        check("seconds" not in f.read(), "report.json has timings")
+    remesh = read_vtp(os.path.join(runs[0], "381.remesh.vtp"))
+    fields = remesh.GetFieldData()
+    names = [fields.GetAbstractArray(i).GetName() for i in range(fields.GetNumberOfArrays())]
+    check(not [n for n in names if n.endswith("Seconds")], "timing field arrays in 381.remesh.vtp: %s" % names)
+
+
 def check_stages_without_a_model(tmp, good, garbage):
     """With a model failed, PCA and the blend grid work on the models that
     were remeshed, two here: one mode, one row of blends. Weights given for
@@ -1521,6 +1615,8 @@ CASES = {
     "given-base-domain": case_given_base_domain,
     "failure-isolation": case_failure_isolation,
     "crash-isolation": case_crash_isolation,
+    "model-timeout": case_model_timeout,
+    "reproducible-files": case_reproducible_files,
     "lower-stretch": case_lower_stretch,
     "free-curves": case_free_curves,
     "fold-repair": case_fold_repair,

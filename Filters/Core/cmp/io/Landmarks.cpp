@@ -67,14 +67,21 @@ Status parseIdList(const std::string& path, const std::string& text, const Trian
     const char* rest = nullptr;
     if (!parseId(line, id, &rest))
       return Status::error(at + "expected a vertex id, found '" + line + "'");
+    // A field more than the format has is an error, not ignored: the file
+    // is then likely of another format, or damaged.
+    if (!withPositions && !trailingText(rest, ',').empty())
+      return Status::error(at + "expected 'lk ID' or 'ID', found '" + trailingText(line.c_str()) + "' (a field more than the format has)");
     int vertex = -1;
     if (Status s = mapFileId(id, fileToMeshPoint, mesh.vertexCount(), at, vertex); !s.ok())
       return s;
     if (withPositions)
     {
       double xyz[3];
-      if (parseNumbers(rest, xyz, 3) != 3)
+      std::string extra;
+      if (parseNumbers(rest, xyz, 3, ' ', &extra) != 3)
         return Status::error(at + "expected 'vertex_id x y z'");
+      if (!extra.empty())
+        return Status::error(at + "expected 'vertex_id x y z', found '" + extra + "' after them");
       const Vec3 filePosition(xyz[0], xyz[1], xyz[2]);
       if ((filePosition - mesh.points[vertex]).norm() > tolerance)
         return Status::error(at + "landmark " + std::to_string(landmarks.size()) + ": vertex " + std::to_string(id) +
@@ -113,7 +120,8 @@ Status parseCsvPositions(const std::string& path, const std::string& text, const
   while (lines.next(line))
   {
     double xyz[3];
-    const int count = parseNumbers(line, xyz, 3, ',');
+    std::string extra;
+    const int count = parseNumbers(line, xyz, 3, ',', &extra);
     if (count != 3)
     {
       if (first && count == 0)
@@ -123,6 +131,8 @@ Status parseCsvPositions(const std::string& path, const std::string& text, const
       }
       return Status::error(fileLine(path, lines.number()) + "expected 'x,y,z'");
     }
+    if (!extra.empty())
+      return Status::error(fileLine(path, lines.number()) + "expected 'x,y,z', found '" + extra + "' after them");
     first = false;
     double distance = 0.0;
     const Vec3 p(xyz[0], xyz[1], xyz[2]);

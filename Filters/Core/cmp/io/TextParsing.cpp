@@ -45,7 +45,7 @@ bool LineReader::next(std::string& line, bool skipBlank)
   return false;
 }
 
-int parseNumbers(const std::string& line, double* values, int max, char separator)
+int parseNumbers(const std::string& line, double* values, int max, char separator, std::string* rest)
 {
   const char* p = line.c_str();
   int count = 0;
@@ -60,7 +60,20 @@ int parseNumbers(const std::string& line, double* values, int max, char separato
     values[count++] = v;
     p = end;
   }
+  if (rest)
+    *rest = trailingText(p, separator);
   return count;
+}
+
+std::string trailingText(const char* from, char separator)
+{
+  const auto blank = [separator](char c) { return c == ' ' || c == '\t' || c == '\r' || c == separator; };
+  while (*from && blank(*from))
+    ++from;
+  std::string text(from);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+    text.pop_back();
+  return text;
 }
 
 std::string fileLine(const std::string& path, int line)

@@ -41,8 +41,14 @@ private:
 };
 
 /// \brief Parses up to `max` numbers separated by blanks or `separator` from
-///        the start of `line`; returns how many were read.
-int parseNumbers(const std::string& line, double* values, int max, char separator = ' ');
+///        the start of `line`; returns how many were read. With `rest`, sets
+///        it to what follows the last number read, blanks and separators
+///        skipped (empty when nothing does).
+int parseNumbers(const std::string& line, double* values, int max, char separator = ' ', std::string* rest = nullptr);
+
+/// \brief `text` from `from` on, without leading and trailing blanks (spaces,
+///        tabs, a CR) and leading `separator`s: empty if nothing else is there.
+std::string trailingText(const char* from, char separator = ' ');
 
 /// \brief "path:line: ", the prefix of a parse error message.
 std::string fileLine(const std::string& path, int line);

@@ -155,17 +155,22 @@ SurfaceCheckResult checkEdges(const TriangleMesh& mesh)
     }
     i = j;
   }
+  // Non-manifold edges first: a fin (a triangle hung on an edge of a closed
+  // surface) also leaves boundary edges, but "open surface" alone would
+  // send the user looking for a hole.
+  if (nonManifold > 0)
+  {
+    return fail(SurfaceDefect::NonManifoldEdge,
+      std::to_string(nonManifold) + " non-manifold edges, e.g. edge " + nonManifoldExample + " shared by " +
+        std::to_string(nonManifoldCount) + " triangles" +
+        (boundary > 0 ? " (and " + std::to_string(boundary) + " boundary edges, e.g. edge " + boundaryExample + ")"
+                      : std::string()));
+  }
   if (boundary > 0)
   {
     return fail(SurfaceDefect::BoundaryEdge,
       "open surface: " + std::to_string(boundary) + " boundary edges (edges with one triangle), e.g. edge " +
         boundaryExample);
-  }
-  if (nonManifold > 0)
-  {
-    return fail(SurfaceDefect::NonManifoldEdge,
-      std::to_string(nonManifold) + " non-manifold edges, e.g. edge " + nonManifoldExample + " shared by " +
-        std::to_string(nonManifoldCount) + " triangles");
   }
   if (misoriented > 0)
   {
