@@ -76,15 +76,21 @@ def run_cli(arguments, output=None, display=None, environment=None, folder=None)
           "consistent-remesh printed a traceback:\n" + result.stderr)
     report = None
     if output and os.path.exists(os.path.join(output, "report.json")):
-        with open(os.path.join(output, "report.json")) as f:
-            report = json.load(f)
-        # The times are in timings.json (reproducible files, issue 26): put
-        # them back where the checks look for them.
-        timings = os.path.join(output, "timings.json")
-        check(os.path.isfile(timings), "report.json without timings.json in " + output)
-        with open(timings) as f:
-            _merge(report, json.load(f))
+        report = read_report(output)
     return result.returncode, result.stdout, result.stderr, report
+
+
+def read_report(output):
+    """report.json of folder `output` with timings.json's times put back
+    where the checks look for them (the times left report.json so that its
+    files are reproducible, issue 26)."""
+    with open(os.path.join(output, "report.json")) as f:
+        report = json.load(f)
+    timings = os.path.join(output, "timings.json")
+    check(os.path.isfile(timings), "report.json without timings.json in " + output)
+    with open(timings) as f:
+        _merge(report, json.load(f))
+    return report
 
 
 def _merge(report, timings):
@@ -1506,8 +1512,7 @@ def case_default_collection(tmp):
     status, stdout, stderr, _ = run_cli([], environment={"CMP_CACHE_DIR": cache}, folder=tmp)
     check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
     out = os.path.join(tmp, "results")
-    with open(os.path.join(out, "report.json")) as f:
-        report = json.load(f)
+    report = read_report(out)
     names = [name for name, _ in QUADRUPEDS]
     check_contains(stdout, "unpacking 5 meshes", "first run")
     for name, _ in QUADRUPEDS:
