@@ -159,6 +159,7 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False, fr
     model.report["straighten"] = {
         "net_length_before": round(value(array_names.NET_LENGTH_BEFORE_FIELD), 6),
         "net_length_after": round(value(array_names.NET_LENGTH_AFTER_FIELD), 6),
+        "straightened_net_length": round(value(array_names.STRAIGHTENED_NET_LENGTH_FIELD), 6),
         "net_length_per_sqrt_area_after": round(value(array_names.NET_LENGTH_PER_SQRT_AREA_AFTER_FIELD), 4),
         "area_variation_before": round(value(array_names.AREA_VARIATION_BEFORE_FIELD), 6),
         "area_variation_after": round(value(array_names.AREA_VARIATION_AFTER_FIELD), 6),
@@ -182,7 +183,7 @@ def straighten_net(model, domain, traced, output_folder, lower_stretch=False, fr
             "applied": bool(value(array_names.FREE_CURVES_APPLIED_FIELD)),
             "distortion_before": significant(value(array_names.MAP_DISTORTION_BEFORE_FIELD), 4),
             "distortion_after": significant(value(array_names.MAP_DISTORTION_AFTER_FIELD), 4),
-            "sweeps": int(value(array_names.MAP_SWEEPS_FIELD)),
+            "iterations": int(value(array_names.MAP_ITERATIONS_FIELD)),
             "crossing_vertices": int(value(array_names.MAP_CROSSING_VERTICES_FIELD)),
         }
         if not model.report["straighten"]["map"]["applied"]:

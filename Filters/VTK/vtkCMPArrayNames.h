@@ -109,6 +109,7 @@ constexpr const char* kPenalisedCurvesField = "PenalisedCurves";
 constexpr const char* kSplitEdgesField = "SplitEdges";
 constexpr const char* kNetLengthBeforeField = "NetLengthBefore";
 constexpr const char* kNetLengthAfterField = "NetLengthAfter";
+constexpr const char* kStraightenedNetLengthField = "StraightenedNetLength";
 constexpr const char* kNetLengthPerSqrtAreaAfterField = "NetLengthPerSqrtAreaAfter";
 constexpr const char* kAreaVariationBeforeField = "AreaVariationBefore";
 constexpr const char* kAreaVariationAfterField = "AreaVariationAfter";
@@ -124,7 +125,7 @@ constexpr const char* kFreeCurvesAppliedField = "FreeCurvesApplied";
 constexpr const char* kFreeCurvesReasonField = "FreeCurvesReason";
 constexpr const char* kMapDistortionBeforeField = "MapDistortionBefore";
 constexpr const char* kMapDistortionAfterField = "MapDistortionAfter";
-constexpr const char* kMapSweepsField = "MapSweeps";
+constexpr const char* kMapIterationsField = "MapIterations";
 constexpr const char* kMapCrossingVerticesField = "MapCrossingVertices";
 
 // Semi-Regular Remesher.

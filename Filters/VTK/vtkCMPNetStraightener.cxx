@@ -150,7 +150,7 @@ int vtkCMPNetStraightener::RequestData(
   options.net.snapTolerance = this->SnapTolerance;
   options.patches.lowerStretch = this->LowerStretch;
   options.freeCurves = this->FreeCurves;
-  options.map.maximumSweeps = this->MapSweeps;
+  options.map.maximumIterations = this->MapIterations;
   options.progress = [this](double fraction) { this->UpdateProgress(0.8 * fraction); };
   if (const cmp::Status problem = cmp::checkStraightenOptions(options); !problem.ok())
   {
@@ -214,6 +214,7 @@ int vtkCMPNetStraightener::RequestData(
     vtkFieldData* field = output->GetFieldData();
     cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthBeforeField, report.netLengthBefore);
     cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthAfterField, report.netLengthAfter);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kStraightenedNetLengthField, straightenReport.straightenedNetLength);
     cmp::bridge::setFieldValue(field, cmp::bridge::kNetLengthPerSqrtAreaAfterField, lengthPerSqrtArea);
     cmp::bridge::setFieldValue(field, cmp::bridge::kAreaVariationBeforeField, report.areaVariationBefore);
     cmp::bridge::setFieldValue(field, cmp::bridge::kAreaVariationAfterField, report.areaVariationAfter);
@@ -229,7 +230,7 @@ int vtkCMPNetStraightener::RequestData(
       cmp::bridge::setFieldValue(field, cmp::bridge::kFreeCurvesAppliedField, freeCurves.applied ? 1 : 0);
       cmp::bridge::setFieldValue(field, cmp::bridge::kMapDistortionBeforeField, freeCurves.map.distortionBefore);
       cmp::bridge::setFieldValue(field, cmp::bridge::kMapDistortionAfterField, freeCurves.map.distortionAfter);
-      cmp::bridge::setFieldValue(field, cmp::bridge::kMapSweepsField, freeCurves.map.sweeps);
+      cmp::bridge::setFieldValue(field, cmp::bridge::kMapIterationsField, freeCurves.map.iterations);
       cmp::bridge::setFieldValue(field, cmp::bridge::kMapCrossingVerticesField, freeCurves.map.crossingVertices);
       cmp::bridge::setFieldString(field, cmp::bridge::kFreeCurvesReasonField, freeCurves.applied ? "" : freeCurves.reason);
     }
@@ -248,5 +249,5 @@ void vtkCMPNetStraightener::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
   os << indent << "LowerStretch: " << this->LowerStretch << "\n";
   os << indent << "FreeCurves: " << this->FreeCurves << "\n";
-  os << indent << "MapSweeps: " << this->MapSweeps << "\n";
+  os << indent << "MapIterations: " << this->MapIterations << "\n";
 }

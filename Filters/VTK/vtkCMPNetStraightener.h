@@ -87,25 +87,26 @@ public:
   ///        surface onto L0 puts its edges (default on; `cmp::freeCurves()`):
   ///        after straightening, every vertex but the landmarks may cross the
   ///        curves to lower the map's symmetric Dirichlet energy against
-  ///        equilateral base triangles of equal area, then the surface is cut
-  ///        anew along the map's preimages of L0's edges and the patch maps
-  ///        are the global map's own places. Where that would not give an
-  ///        equivalent layout, the straightened net is kept with a warning.
-  ///        Off, the paper's fixed straightened curves and per-patch maps.
-  ///        Field arrays `FreeCurvesApplied`, `MapDistortionBefore`,
-  ///        `MapDistortionAfter`, `MapSweeps`, `MapCrossingVertices`. Measured
-  ///        figures are in Documentation/filters/NetStraightener.md.
+  ///        equilateral base triangles of equal area (one seamless map of the
+  ///        whole surface, Newton steps that never fold a triangle), then the
+  ///        surface is cut exactly along the map's preimages of L0's edges,
+  ///        so that the remesher samples the map itself. Should the cut not
+  ///        give an equivalent layout, the straightened net is kept with a
+  ///        warning. Off, the paper's fixed straightened curves and per-patch
+  ///        maps. Field arrays `FreeCurvesApplied`, `MapDistortionBefore`,
+  ///        `MapDistortionAfter`, `MapIterations`, `MapCrossingVertices`.
+  ///        Measured figures are in Documentation/filters/NetStraightener.md.
   vtkSetMacro(FreeCurves, bool);
   /// \brief Move the curves where one map of the whole surface puts them.
   vtkGetMacro(FreeCurves, bool);
   /// \brief Move the curves where one map of the whole surface puts them.
   vtkBooleanMacro(FreeCurves, bool);
 
-  /// \brief Gauss-Seidel sweeps of the whole-surface map at most (default
-  ///        200; >= 0), with FreeCurves.
-  vtkSetMacro(MapSweeps, int);
-  /// \brief Sweeps of the whole-surface map at most.
-  vtkGetMacro(MapSweeps, int);
+  /// \brief Newton steps of the whole-surface map at most (default 100;
+  ///        >= 0), with FreeCurves.
+  vtkSetMacro(MapIterations, int);
+  /// \brief Newton steps of the whole-surface map at most.
+  vtkGetMacro(MapIterations, int);
 
 protected:
   vtkCMPNetStraightener();
@@ -122,5 +123,5 @@ private:
   double SnapTolerance = 0.1;
   bool LowerStretch = false;
   bool FreeCurves = true;
-  int MapSweeps = 200;
+  int MapIterations = 100;
 };

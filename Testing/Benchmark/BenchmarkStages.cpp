@@ -109,7 +109,7 @@ Status straightenStage(ModelContext& ctx)
   setFigure(ctx.figures, "map_applied", report.freeCurves.applied ? 1.0 : 0.0);
   setFigure(ctx.figures, "map_distortion_before", report.freeCurves.map.distortionBefore);
   setFigure(ctx.figures, "map_distortion_after", report.freeCurves.map.distortionAfter);
-  setFigure(ctx.figures, "map_sweeps", report.freeCurves.map.sweeps);
+  setFigure(ctx.figures, "map_iterations", report.freeCurves.map.iterations);
   return status;
 }
 

@@ -231,7 +231,7 @@ std::string mapFiguresNote()
          "default (edge straightening, the per-patch maps, then `freeCurves()`: the whole-surface map and the cut "
          "along it), each timed inside that call (the fastest call's); `remesh` and the measurements after it work on "
          "the map's result; map_applied = 1 where the curves were freed, map_distortion_before/_after = the global "
-         "map's mean symmetric Dirichlet energy over its isometric value, map_sweeps = its Gauss-Seidel sweeps; "
+         "map's mean symmetric Dirichlet energy over its isometric value, map_iterations = its Newton steps; "
          "`yardstick` (not counted in `total`) = one Eigen SimplicialLDLT factorization of the model's cotan "
          "Laplacian (shifted by 1e-8 of its mean diagonal) plus 21 solves, yardstick_seconds = those alone (without "
          "building the matrix), pipeline_per_yardstick = `total` / yardstick_seconds (issue 24: median <= 25)";

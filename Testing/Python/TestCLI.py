@@ -221,10 +221,16 @@ def check_straightened(out, name, model, landmarks=21, flips_allowed=False):
     check(figures["net_valid"] is True, name + ": straightened net not valid")
     check(figures["sweeps"] >= 1, name + ": no sweep ran")
     # Straightening shortens the traced net; free curves follow the map,
-    # not shortest paths (measured up to 6.2% longer than traced).
-    limit = 1.07 if figures.get("free_curves") else 1.02
+    # not shortest paths (measured up to 7.4% longer than traced on the 11
+    # SHREC'07 and Spot models with L0 from 381).
+    limit = 1.10 if figures.get("free_curves") else 1.02
     check(0 < figures["net_length_after"] <= limit * figures["net_length_before"],
           name + ": net length %s -> %s" % (figures["net_length_before"], figures["net_length_after"]))
+    check(0 < figures["straightened_net_length"] <= 1.02 * figures["net_length_before"],
+          name + ": straightened net length %s -> %s" % (figures["net_length_before"],
+                                                        figures["straightened_net_length"]))
+    if not figures.get("free_curves"):
+        check_equal(figures["straightened_net_length"], figures["net_length_after"], name + ": straightened net")
     check(figures["area_variation_before"] >= 0 and figures["area_variation_after"] >= 0, name + ": area variation")
     check(45.0 <= figures["widest_curve_gap_degrees"] < 360.0 and 0 <= figures["widest_curve_gap_landmark"] < landmarks,
           "%s: widest curve gap %r" % (name, figures))
@@ -956,7 +962,7 @@ def case_free_curves(tmp):
                 continue
             figures = straighten["map"]
             check(figures["applied"], name + ": the curves were not moved")
-            check(1 <= figures["sweeps"] <= 200, "%s: sweeps %r" % (name, figures["sweeps"]))
+            check(1 <= figures["iterations"] <= 100, "%s: iterations %r" % (name, figures["iterations"]))
             check(figures["distortion_after"] < 0.95 * figures["distortion_before"],
                   "%s: map distortion %g -> %g" % (name, figures["distortion_before"], figures["distortion_after"]))
             check(figures["crossing_vertices"] > 0, name + ": no vertex crossed a curve")

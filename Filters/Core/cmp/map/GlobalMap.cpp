@@ -1,16 +1,17 @@
 #include <cmp/map/GlobalMap.h>
 
-#include <cmp/numerics/MeanValueSystem.h>
-#include <cmp/numerics/SymmetricDirichletRelaxation.h>
-
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <Eigen/SVD>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <string>
+#include <map>
+#include <unordered_map>
 
 namespace cmp
 {
@@ -19,912 +20,1449 @@ namespace
 {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-/// Tries of one star solve, each holding more vertices, before it is skipped.
-constexpr int kStarAttempts = 3;
-/// Halvings of a vertex's step at most before it stays.
-constexpr int kBacktrackingSteps = 10;
-/// A vertex's step never exceeds this share of its shortest edge in the chart.
-constexpr double kLongestStepShare = 0.5;
+using Mat2 = Eigen::Matrix2d;
+/// A base triangle drawn in a plane: its corners in its vertex order.
+using Drawing = std::array<Vec2, 3>;
 
-/// One surface triangle's metric: its area and the inverse of its edge
-/// matrix in an isometric frame of its own.
-struct Metric
+/// Barycentric coordinates of `p` in the plane triangle `corners`.
+std::array<double, 3> barycentricIn(const std::array<Vec2, 3>& corners, const Vec2& p)
 {
-  double area = 0.0;
-  /// The energy's weight over the area (1 but near a landmark).
-  double weight = 1.0;
-  Eigen::Matrix2d inverseEdges = Eigen::Matrix2d::Zero();
-};
-
-/// Symmetric Dirichlet energy of a triangle whose corners sit at `p` in a
-/// chart (unit frame, scaled by `side`); with `gradient`, adds d energy /
-/// d p[corner] (in unit coordinates).
-double triangleEnergy(const Metric& metric, const std::array<Vec2, 3>& p, double side, int corner = -1,
-  Vec2* gradient = nullptr)
-{
-  if (!(metric.area > 0.0))
-    return 0.0;
-  Eigen::Matrix2d edges;
-  edges.col(0) = side * (p[1] - p[0]);
-  edges.col(1) = side * (p[2] - p[0]);
-  const Eigen::Matrix2d J = edges * metric.inverseEdges;
-  const double d = J.determinant();
-  if (!(d > 0.0))
-    return kInfinity;
-  const double frobenius = J.squaredNorm(), inverse = 1.0 / (d * d);
-  if (gradient)
-  {
-    Eigen::Matrix2d cofactor;
-    cofactor << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
-    const Eigen::Matrix2d dJ =
-      metric.weight * metric.area * (2.0 * (1.0 + inverse) * J - 2.0 * frobenius * inverse / d * cofactor);
-    const Eigen::Matrix2d dE = side * dJ * metric.inverseEdges.transpose();
-    if (corner == 1)
-      *gradient += dE.col(0);
-    else if (corner == 2)
-      *gradient += dE.col(1);
-    else
-      *gradient -= dE.col(0) + dE.col(1);
-  }
-  return metric.weight * metric.area * frobenius * (1.0 + inverse);
+  const Vec2 e1 = corners[1] - corners[0], e2 = corners[2] - corners[0], d = p - corners[0];
+  const double det = cross2(e1, e2);
+  const double b1 = cross2(d, e2) / det, b2 = cross2(e1, d) / det;
+  return { 1.0 - b1 - b2, b1, b2 };
 }
 
+/// The point left of the line from `p` to `q` at distance `dp` from `p`
+/// and `dq` from `q`.
+Vec2 apex(const Vec2& p, const Vec2& q, double dp, double dq)
+{
+  const Vec2 e = q - p;
+  const double length = e.norm();
+  const Vec2 u = e / length;
+  const double x = (dp * dp - dq * dq + length * length) / (2.0 * length);
+  const double h = std::sqrt(std::max(0.0, dp * dp - x * x));
+  return p + x * u + h * Vec2(-u.y(), u.x());
+}
 
-/// The star of one base vertex unfolded: its k triangles drawn equilateral
-/// (side `side`) one after the other round the vertex, from the spoke to
-/// ring vertex `cut` on, so that the chart is isometric to L0's except
-/// across that spoke, where it is open (a gap below valence 6, a second
-/// sheet above). A point on the open spoke has no place in the chart.
-class StarChart
+/// L0 drawn with equilateral triangles of one side: each triangle unfolded
+/// beside its neighbours, and straight walks across them.
+class DomainGeometry
 {
 public:
-  /// False if the triangles round `center` do not close into one fan.
-  bool build(const BaseDomain& domain, int center, int cut, double side)
+  Status build(const BaseDomain& domain, double side)
   {
-    center_ = center;
-    triangles_ = &domain.mesh.triangles;
-    ring_.clear();
-    sector_.clear();
-    std::vector<int> around;
-    for (int t = 0; t < domain.mesh.triangleCount(); ++t)
+    side_ = side;
+    const int count = domain.mesh.triangleCount();
+    const int vertices = domain.mesh.vertexCount();
+    neighbour_.assign(count, { { -1, -1, -1 } });
+    neighbourEdge_.assign(count, { { -1, -1, -1 } });
+    std::unordered_map<long long, std::pair<int, int>> directed;
+    for (int t = 0; t < count; ++t)
       for (int k = 0; k < 3; ++k)
-        if (domain.mesh.triangles[t][k] == center)
-          around.push_back(t);
-    if (around.size() < 3)
-      return false;
-    int t = around[0];
-    for (std::size_t i = 0; i < around.size(); ++i)
-    {
-      const Triangle& tri = domain.mesh.triangles[t];
-      const int k = static_cast<int>(std::find(tri.begin(), tri.end(), center) - tri.begin());
-      ring_.push_back(tri[(k + 1) % 3]);
-      sector_.push_back(t);
-      const int next = tri[(k + 2) % 3];
-      t = -1;
-      for (int candidate : around)
       {
-        const Triangle& c = domain.mesh.triangles[candidate];
-        const int kc = static_cast<int>(std::find(c.begin(), c.end(), center) - c.begin());
-        if (c[(kc + 1) % 3] == next)
-          t = candidate;
+        const Triangle& tri = domain.mesh.triangles[t];
+        directed[static_cast<long long>(tri[k]) * vertices + tri[(k + 1) % 3]] = { t, k };
       }
-      if (t < 0)
-        return false;
-    }
-    if (t != around[0])
-      return false;
-    const int k = valence();
-    std::rotate(ring_.begin(), ring_.begin() + cut % k, ring_.end());
-    std::rotate(sector_.begin(), sector_.begin() + cut % k, sector_.end());
-    legs_.resize(k + 1);
-    for (int i = 0; i <= k; ++i)
-      legs_[i] = side * Vec2(std::cos(i * kPi / 3.0), std::sin(i * kPi / 3.0));
-    return true;
+    for (int t = 0; t < count; ++t)
+      for (int k = 0; k < 3; ++k)
+      {
+        const Triangle& tri = domain.mesh.triangles[t];
+        const auto found = directed.find(static_cast<long long>(tri[(k + 1) % 3]) * vertices + tri[k]);
+        if (found == directed.end())
+          return Status::error("global map: L0 is not closed");
+        neighbour_[t][k] = found->second.first;
+        neighbourEdge_[t][k] = found->second.second;
+      }
+    return {};
   }
 
-  int valence() const { return static_cast<int>(ring_.size()); }
-
-  /// `p` in the chart, with its angle round the centre (0 to k pi / 3);
-  /// false if it lies outside the closed star or on the open spoke. With
-  /// `inside`, whether it lies in the open star (off its rim).
-  bool position(const BasePoint& p, Vec2& q, double& angle, bool* inside = nullptr) const
+  /// A triangle drawn on its own: corner 0 at the origin, corner 1 on the
+  /// x axis.
+  Drawing canonical() const
   {
-    const std::array<double, 3> c = BaseCharts::barycentric(p);
-    const Triangle& tri = (*triangles_)[p.triangle];
-    const int k = valence();
-    int found = -1;
-    double weights[3] = { 0.0, 0.0, 0.0 }; // centre, ring i, ring i + 1
-    for (int i = 0; i < k; ++i)
+    return { Vec2(0.0, 0.0), Vec2(side_, 0.0), apex(Vec2(0.0, 0.0), Vec2(side_, 0.0), side_, side_) };
+  }
+
+  /// The triangle across edge k (corners k, k + 1) of `t`, drawn `drawing`,
+  /// drawn beside it; `result` gets its index.
+  Drawing unfold(int t, const Drawing& drawing, int k, int& result) const
+  {
+    result = neighbour_[t][k];
+    const int j = neighbourEdge_[t][k];
+    Drawing out;
+    out[j] = drawing[(k + 1) % 3];
+    out[(j + 1) % 3] = drawing[k];
+    out[(j + 2) % 3] = apex(out[j], out[(j + 1) % 3], side_, side_);
+    return out;
+  }
+
+  /// Walks the straight segment from `from` to `to` (points of the plane
+  /// of `drawing`, `from` in triangle `t`) across L0's triangles, each
+  /// unfolded beside the last; `t` and `drawing` end as the triangle that
+  /// holds `to`. False if the walk does not end.
+  bool walk(int& t, Drawing& drawing, const Vec2& from, const Vec2& to) const
+  {
+    int entry = -1; // local edge of `t` the walk came in by
+    for (int step = 0; step < 10000; ++step)
     {
-      const int a = ring_[i], b = ring_[(i + 1) % k];
-      double w[3] = { 0.0, 0.0, 0.0 };
-      bool holds = true;
-      for (int j = 0; j < 3 && holds; ++j)
+      const std::array<double, 3> end = barycentricIn(drawing, to);
+      if (std::min({ end[0], end[1], end[2] }) >= -1e-12)
+        return true;
+      const std::array<double, 3> start = barycentricIn(drawing, from);
+      // Corner c's coordinate falls below 0 across edge c + 1 (corners
+      // c + 1, c + 2); of those the segment crosses, the first.
+      int exit = -1;
+      double first = kInfinity;
+      for (int c = 0; c < 3; ++c)
       {
-        const double x = std::max(c[j], 0.0);
-        if (x < kOffStar)
+        const int edge = (c + 1) % 3;
+        if (!(end[c] < 0.0) || edge == entry)
           continue;
-        if (tri[j] == center_)
-          w[0] += x;
-        else if (tri[j] == a)
-          w[1] += x;
-        else if (tri[j] == b)
-          w[2] += x;
-        else
-          holds = false;
+        const double denominator = start[c] - end[c];
+        const double at = denominator > 0.0 ? start[c] / denominator : 0.0;
+        if (at < first)
+        {
+          first = at;
+          exit = edge;
+        }
       }
-      if (!holds)
-        continue;
-      if (found >= 0 && !(w[1] == 0.0 && w[2] == 0.0))
-      {
-        // On the spoke between sector k - 1 and sector 0: open there.
-        if (found == 0 && i == k - 1)
-          return false;
-      }
-      if (found < 0)
-      {
-        found = i;
-        std::copy(w, w + 3, weights);
-      }
+      if (exit < 0)
+        return true; // only outside the edge it came in by: rounding
+      int next = -1;
+      drawing = unfold(t, drawing, exit, next);
+      entry = neighbourEdge_[t][exit];
+      t = next;
     }
-    const double sum = weights[0] + weights[1] + weights[2];
-    if (found < 0 || !(sum > 0.0))
-      return false;
-    q = (weights[1] * legs_[found] + weights[2] * legs_[found + 1]) / sum;
-    angle = (found + (weights[1] + weights[2] > 0.0 ? weights[2] / (weights[1] + weights[2]) : 0.5)) * kPi / 3.0;
-    if (inside)
-      *inside = weights[0] / sum > kOffStar;
-    return true;
-  }
-
-  /// The base point at chart point `q`, on the sheet nearest to `angle`.
-  BasePoint point(const Vec2& q, double angle) const
-  {
-    const int k = valence();
-    double theta = std::atan2(q.y(), q.x());
-    theta += 2.0 * kPi * std::round((angle - theta) / (2.0 * kPi));
-    const int i = std::clamp(static_cast<int>(std::floor(theta / (kPi / 3.0))), 0, k - 1);
-    Eigen::Matrix2d legs;
-    legs.col(0) = legs_[i];
-    legs.col(1) = legs_[i + 1];
-    const Vec2 ab = legs.inverse() * q;
-    const double a = std::max(ab.x(), 0.0), b = std::max(ab.y(), 0.0);
-    const double centre = std::max(1.0 - a - b, 0.0), sum = centre + a + b;
-    const Triangle& tri = (*triangles_)[sector_[i]];
-    std::array<double, 3> c{ 0.0, 0.0, 0.0 };
-    for (int j = 0; j < 3; ++j)
-      c[j] = tri[j] == center_ ? centre / sum : tri[j] == ring_[i] ? a / sum : b / sum;
-    return BaseCharts::fromBarycentric(sector_[i], c);
+    return false;
   }
 
 private:
-  /// Barycentric weights below this count as none (a point on the rim).
-  static constexpr double kOffStar = 1e-10;
-  int center_ = -1;
-  const std::vector<Triangle>* triangles_ = nullptr;
-  std::vector<int> ring_;   ///< Base vertices round the centre, counter-clockwise from the cut.
-  std::vector<int> sector_; ///< Base triangle (centre, ring i, ring i + 1).
-  std::vector<Vec2> legs_;  ///< Chart place of ring vertex i (k + 1 of them: the cut's twice).
+  double side_ = 1.0;
+  std::vector<std::array<int, 3>> neighbour_;
+  std::vector<std::array<int, 3>> neighbourEdge_;
 };
 
-/// Per surface triangle, 1 + min(cap, (radius / r)^2), r the distance of
-/// its centroid from the nearest landmark (see
-/// `GlobalMapOptions::landmarkWeightRadius`); empty if `radius` is 0.
-std::vector<double> landmarkWeights(const EditableMesh& mesh, const std::vector<int>& landmarks, double radius, double cap)
+/// A rigid motion of the plane: x -> rotation x + shift.
+struct Motion
 {
-  if (!(radius > 0.0) || !(cap > 0.0))
-    return {};
-  std::vector<double> weights(mesh.triangleCount(), 1.0);
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-  {
-    const Triangle& tri = mesh.triangle(t);
-    const Vec3 c = (mesh.point(tri[0]) + mesh.point(tri[1]) + mesh.point(tri[2])) / 3.0;
-    double nearest = kInfinity;
-    for (int l : landmarks)
-      nearest = std::min(nearest, (mesh.point(l) - c).squaredNorm());
-    weights[t] = 1.0 + (nearest > 0.0 ? std::min(cap, radius * radius / nearest) : cap);
-  }
-  return weights;
+  Mat2 rotation = Mat2::Identity();
+  Vec2 shift = Vec2::Zero();
+  Vec2 operator()(const Vec2& x) const { return rotation * x + shift; }
+};
+
+/// The affine map taking the corners of `from` onto those of `to`.
+Motion motionBetween(const Drawing& from, const Drawing& to)
+{
+  Mat2 a, b;
+  a.col(0) = from[1] - from[0];
+  a.col(1) = from[2] - from[0];
+  b.col(0) = to[1] - to[0];
+  b.col(1) = to[2] - to[0];
+  Motion m;
+  m.rotation = b * a.inverse();
+  m.shift = to[0] - m.rotation * from[0];
+  return m;
 }
 
-/// One star's solve: the surface vertices whose whole ring lies in the
-/// star of base vertex `center` (the landmarks aside, and away from the
-/// spoke to ring vertex `cut`) relaxed together in its chart, the rest
-/// held; returns the number of vertices moved.
-int relaxStar(const TracedNet& net, const BaseDomain& domain, int center, int cut, double side,
-  const std::vector<char>& pinned, const SymmetricDirichletOptions& options, const std::function<bool(int)>& valid,
-  std::vector<BasePoint>& points)
+Vec2 atBarycentric(const Drawing& d, const std::array<double, 3>& b)
 {
-  StarChart chart;
-  if (!chart.build(domain, center, cut, side))
-    return 0;
-  const EditableMesh& mesh = net.mesh;
-  const int n = mesh.vertexCount();
-  std::vector<Vec2> q(n);
-  std::vector<double> angle(n, 0.0);
-  std::vector<char> inStar(n, 0), inside(n, 0), free(n, 0);
-  for (int v = 0; v < n; ++v)
+  return b[0] * d[0] + b[1] * d[1] + b[2] * d[2];
+}
+
+/// The symmetric Dirichlet energy density |F|^2 + |F^-1|^2 of a 2x2
+/// Jacobian, infinite if it is flipped or flat.
+double density(const Mat2& f)
+{
+  const double det = f.determinant();
+  if (!(det > 0.0))
+    return kInfinity;
+  return f.squaredNorm() * (1.0 + 1.0 / (det * det));
+}
+
+/// d density / d F (column-major vec) and its Hessian projected onto its
+/// positive part, from the singular values (Smith, De Goes, Kim 2019:
+/// twist, flip and the two scalings are its eigenvectors).
+void densityDerivatives(const Mat2& f, Eigen::Vector4d& gradient, Eigen::Matrix4d& hessian)
+{
+  Eigen::JacobiSVD<Mat2> svd(f, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat2 u = svd.matrixU(), v = svd.matrixV();
+  Eigen::Vector2d s = svd.singularValues();
+  // Rotations, not reflections: det > 0, so flip the sign of both.
+  if (u.determinant() < 0.0)
   {
-    bool open = false;
-    inStar[v] = chart.position(points[v], q[v], angle[v], &open) ? 1 : 0;
-    inside[v] = open ? 1 : 0;
+    u.col(1) *= -1.0;
+    v.col(1) *= -1.0;
   }
-  std::vector<char> held(n, 0);
-  std::vector<int> triangles;
-  for (int attempt = 0; attempt < kStarAttempts; ++attempt)
+  const double s1 = s(0), s2 = s(1);
+  const auto vec = [](const Mat2& m) { return Eigen::Vector4d(m(0, 0), m(1, 0), m(0, 1), m(1, 1)); };
+  Mat2 diagonal = Mat2::Zero();
+  diagonal(0, 0) = 2.0 * s1 - 2.0 / (s1 * s1 * s1);
+  diagonal(1, 1) = 2.0 * s2 - 2.0 / (s2 * s2 * s2);
+  gradient = vec(u * diagonal * v.transpose());
+  const double p = s1 * s2, p3 = p * p * p;
+  const double twist = std::max(0.0, 2.0 - 2.0 * (s1 * s1 - p + s2 * s2) / p3);
+  const double flip = 2.0 + 2.0 * (s1 * s1 + p + s2 * s2) / p3;
+  const double scale1 = 2.0 + 6.0 / (s1 * s1 * s1 * s1);
+  const double scale2 = 2.0 + 6.0 / (s2 * s2 * s2 * s2);
+  Mat2 twistMode, flipMode, scaleMode1, scaleMode2;
+  twistMode << 0.0, -1.0, 1.0, 0.0;
+  flipMode << 0.0, 1.0, 1.0, 0.0;
+  scaleMode1 << 1.0, 0.0, 0.0, 0.0;
+  scaleMode2 << 0.0, 0.0, 0.0, 1.0;
+  const Eigen::Vector4d qt = vec(u * twistMode * v.transpose()) / std::sqrt(2.0);
+  const Eigen::Vector4d qf = vec(u * flipMode * v.transpose()) / std::sqrt(2.0);
+  const Eigen::Vector4d q1 = vec(u * scaleMode1 * v.transpose());
+  const Eigen::Vector4d q2 = vec(u * scaleMode2 * v.transpose());
+  hessian = twist * qt * qt.transpose() + flip * qf * qf.transpose() + scale1 * q1 * q1.transpose() +
+    scale2 * q2 * q2.transpose();
+}
+
+/// The smallest step in (0, 1] along (f1, f2) at which the triangle with
+/// edges (e1, e2) flats, or 1 if none.
+double flipBound(const Vec2& e1, const Vec2& e2, const Vec2& f1, const Vec2& f2)
+{
+  const double c = cross2(e1, e2);
+  const double b = cross2(e1, f2) + cross2(f1, e2);
+  const double a = cross2(f1, f2);
+  double bound = kInfinity;
+  const auto consider = [&](double t) {
+    if (t > 0.0)
+      bound = std::min(bound, t);
+  };
+  if (a == 0.0)
   {
+    if (b != 0.0)
+      consider(-c / b);
+  }
+  else
+  {
+    const double disc = b * b - 4.0 * a * c;
+    if (disc >= 0.0)
+    {
+      // The two roots, without cancellation.
+      const double q = -0.5 * (b + (b >= 0.0 ? std::sqrt(disc) : -std::sqrt(disc)));
+      if (q != 0.0)
+      {
+        consider(q / a);
+        consider(c / q);
+      }
+    }
+  }
+  return bound;
+}
+
+/// Area of the part of triangle `p` inside triangle `q` (both
+/// counter-clockwise), by clipping `p` against `q`'s sides.
+double overlapArea(const std::array<Vec2, 3>& p, const Drawing& q)
+{
+  std::vector<Vec2> polygon(p.begin(), p.end()), next;
+  for (int j = 0; j < 3 && !polygon.empty(); ++j)
+  {
+    const Vec2 a = q[j], d = q[(j + 1) % 3] - q[j];
+    next.clear();
+    const int m = static_cast<int>(polygon.size());
+    for (int i = 0; i < m; ++i)
+    {
+      const Vec2& x = polygon[i];
+      const Vec2& y = polygon[(i + 1) % m];
+      const double fx = cross2(d, x - a), fy = cross2(d, y - a);
+      if (fx >= 0.0)
+        next.push_back(x);
+      if ((fx >= 0.0) != (fy >= 0.0))
+        next.push_back(x + fx / (fx - fy) * (y - x));
+    }
+    polygon.swap(next);
+  }
+  double area = 0.0;
+  const int m = static_cast<int>(polygon.size());
+  for (int i = 0; i < m; ++i)
+    area += cross2(polygon[i], polygon[(i + 1) % m]);
+  const double whole = cross2(p[1] - p[0], p[2] - p[0]);
+  return 0.5 * area > 1e-10 * whole ? 0.5 * area : 0.0;
+}
+
+/// Whether the segment from `a` to `b` runs through the inside of
+/// triangle `p` (counter-clockwise) for a length, not only touching it.
+bool crossesInside(const std::array<Vec2, 3>& p, const Vec2& a, const Vec2& b)
+{
+  double low = 0.0, high = 1.0;
+  const Vec2 d = b - a;
+  const double scale = std::sqrt(std::abs(cross2(p[1] - p[0], p[2] - p[0])));
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec2 e = p[(k + 1) % 3] - p[k];
+    const double length = e.norm();
+    // Signed distance inside the side's line, along the segment.
+    const double at = cross2(e, a - p[k]) / length, slope = cross2(e, d) / length;
+    if (std::abs(slope) < 1e-300)
+    {
+      if (at <= 1e-12 * scale)
+        return false;
+      continue;
+    }
+    const double zero = -at / slope;
+    if (slope > 0.0)
+      low = std::max(low, zero);
+    else
+      high = std::min(high, zero);
+  }
+  return (high - low) * d.norm() > 1e-9 * scale;
+}
+
+/// The smallest angle of the triangle (a, b, c).
+double smallestAngle(const Vec2& a, const Vec2& b, const Vec2& c)
+{
+  const auto angle = [](const Vec2& at, const Vec2& x, const Vec2& y) {
+    return std::abs(std::atan2(cross2(x - at, y - at), (x - at).dot(y - at)));
+  };
+  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
+}
+
+class SeamlessProblem
+{
+public:
+  Status build(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& map,
+    const GlobalMapOptions& options)
+  {
+    const EditableMesh& mesh = net.mesh;
+    mesh_ = &mesh;
+    const int n = mesh.vertexCount();
+    const int triangles = mesh.triangleCount();
+    const int baseVertices = domain.mesh.vertexCount();
+    const int baseTriangles = domain.mesh.triangleCount();
+    const int baseEdges = static_cast<int>(net.baseEdges.size());
+    if (static_cast<int>(map.baseTriangle.size()) != n || static_cast<int>(map.baseCoordinates.size()) != n ||
+      static_cast<int>(net.patchOfTriangle.size()) != triangles ||
+      static_cast<int>(net.landmarkVertex.size()) != baseVertices ||
+      static_cast<int>(net.curves.size()) != baseEdges)
+      return Status::error("global map: the layout and its parameterization do not belong together");
+
+    // The surface's metric: each triangle's area and inverse edge matrix.
+    area_.assign(triangles, 0.0);
+    inverseEdges_.assign(triangles, Mat2::Zero());
+    used_.assign(n, 0);
+    totalArea_ = 0.0;
+    for (int t = 0; t < triangles; ++t)
+    {
+      if (mesh.isRemoved(t))
+        continue;
+      const Triangle& tri = mesh.triangle(t);
+      for (int v : tri)
+        used_[v] = 1;
+      const Vec3 e1 = mesh.point(tri[1]) - mesh.point(tri[0]), e2 = mesh.point(tri[2]) - mesh.point(tri[0]);
+      const double twiceArea = e1.cross(e2).norm();
+      const double length = e1.norm();
+      if (!(twiceArea > 1e-14 * (e1.squaredNorm() + e2.squaredNorm())) || !(length > 0.0))
+        continue; // degenerate: kept unflipped, but no say in the energy
+      Mat2 edges;
+      edges << length, e2.dot(e1) / length, 0.0, twiceArea / length;
+      area_[t] = 0.5 * twiceArea;
+      inverseEdges_[t] = edges.inverse();
+      totalArea_ += area_[t];
+    }
+    if (!(totalArea_ > 0.0))
+      return Status::error("global map: the surface has no area");
+    side_ = std::sqrt(4.0 * totalArea_ / (std::sqrt(3.0) * baseTriangles));
+    if (Status s = geometry_.build(domain, side_); !s.ok())
+      return s;
+
+    // A spanning tree of L0's vertices: its curves cut the surface into a
+    // disk, its edges L0 into one.
+    std::vector<std::vector<int>> edgesAt(baseVertices);
+    for (int e = 0; e < baseEdges; ++e)
+      for (int end : net.baseEdges[e])
+        edgesAt[end].push_back(e);
+    std::vector<char> inTree(baseEdges, 0), reached(baseVertices, 0);
+    std::vector<int> queue{ 0 };
+    reached[0] = 1;
+    for (std::size_t i = 0; i < queue.size(); ++i)
+      for (int e : edgesAt[queue[i]])
+      {
+        const int other = net.baseEdges[e][0] == queue[i] ? net.baseEdges[e][1] : net.baseEdges[e][0];
+        if (!reached[other])
+        {
+          reached[other] = 1;
+          inTree[e] = 1;
+          queue.push_back(other);
+        }
+      }
+    baseVertices_ = baseVertices;
+    edgeOf_.clear();
+    for (int e = 0; e < baseEdges; ++e)
+    {
+      const int a = net.baseEdges[e][0], b = net.baseEdges[e][1];
+      edgeOf_[static_cast<long long>(std::min(a, b)) * baseVertices + std::max(a, b)] = e;
+    }
+
+    // L0 cut along the tree, drawn flat: across the other edges.
+    drawing_.assign(baseTriangles, Drawing{});
+    std::vector<char> drawn(baseTriangles, 0);
+    drawn[0] = 1;
+    drawing_[0] = geometry_.canonical();
+    queue.assign(1, 0);
+    for (std::size_t i = 0; i < queue.size(); ++i)
+    {
+      const int t = queue[i];
+      for (int k = 0; k < 3; ++k)
+      {
+        const Triangle& tri = domain.mesh.triangles[t];
+        const int e = baseEdge(tri[k], tri[(k + 1) % 3]);
+        if (e < 0)
+          return Status::error("global map: an edge of L0 has no curve");
+        int next = -1;
+        const Drawing beside = geometry_.unfold(t, drawing_[t], k, next);
+        if (inTree[e] || drawn[next])
+          continue;
+        drawn[next] = 1;
+        drawing_[next] = beside;
+        queue.push_back(next);
+      }
+    }
+    if (std::find(drawn.begin(), drawn.end(), 0) != drawn.end())
+      return Status::error("global map: L0 cut along a spanning tree is not one disk");
+
+    // The surface cut along the tree's curves.
+    std::vector<char> cut(mesh.halfedgeCount(), 0);
+    std::vector<int> curveOf(n, -1);
+    for (int e = 0; e < baseEdges; ++e)
+    {
+      const std::vector<int>& curve = net.curves[e];
+      for (std::size_t i = 0; i + 1 < curve.size(); ++i)
+      {
+        const int h = mesh.findHalfedge(curve[i], curve[i + 1]);
+        if (h < 0)
+          return Status::error("global map: curve " + std::to_string(e) + " does not run along mesh edges");
+        if (inTree[e])
+          cut[h] = cut[mesh.opposite(h)] = 1;
+      }
+      for (std::size_t i = 1; i + 1 < curve.size(); ++i)
+        curveOf[curve[i]] = e;
+    }
+    pinned_.assign(n, 0);
+    for (int v : net.landmarkVertex)
+      pinned_[v] = 1;
+    net_ = &net;
+    domain_ = &domain;
+
+    // One copy of a vertex per wedge between cut edges round it.
+    copyOfCorner_.assign(mesh.halfedgeCount(), -1);
+    copyPosition_.clear();
+    copyVertex_.clear();
+    copyPatch_.clear();
+    firstCopy_.assign(n, -1);
+    std::vector<int> ring;
     for (int v = 0; v < n; ++v)
     {
-      free[v] = 0;
-      if (pinned[v] || !inside[v] || held[v])
+      if (!used_[v])
         continue;
-      bool ring = true;
+      ring.clear();
       const int first = mesh.outgoing(v);
       int h = first;
       do
       {
-        ring = inStar[mesh.to(h)] != 0;
+        ring.push_back(h);
         h = mesh.nextAroundVertex(h);
-      } while (ring && h != first);
-      free[v] = ring ? 1 : 0;
-    }
-    // A triangle across the open spoke (its corners more than half a turn
-    // apart round the centre), or one the chart shows flipped or flat, holds
-    // its corners.
-    triangles.clear();
-    for (int t = 0; t < mesh.triangleCount(); ++t)
-    {
-      const Triangle& tri = mesh.triangle(t);
-      if (!free[tri[0]] && !free[tri[1]] && !free[tri[2]])
-        continue;
-      double lowest = kInfinity, highest = -kInfinity;
-      for (int v : tri)
-        if (q[v].squaredNorm() > 0.0) // the centre has no angle
+      } while (h != first && ring.size() <= static_cast<std::size_t>(triangles));
+      const int m = static_cast<int>(ring.size());
+      int start = 0;
+      for (int i = 0; i < m; ++i)
+        if (cut[ring[i]])
         {
-          lowest = std::min(lowest, angle[v]);
-          highest = std::max(highest, angle[v]);
+          start = i;
+          break;
         }
-      if (highest - lowest > kPi || !(cross2(q[tri[1]] - q[tri[0]], q[tri[2]] - q[tri[0]]) > 0.0))
-        for (int v : tri)
-          free[v] = 0;
-    }
-    for (int t = 0; t < mesh.triangleCount(); ++t)
-    {
-      const Triangle& tri = mesh.triangle(t);
-      if (free[tri[0]] || free[tri[1]] || free[tri[2]])
-        triangles.push_back(t);
-    }
-    if (triangles.empty())
-      return 0;
-    std::vector<int> local(n, -1), global;
-    const TriangleMesh piece = extractTriangles(mesh, triangles, local, global);
-    Eigen::MatrixXd plane(piece.vertexCount(), 2);
-    std::vector<char> fixed(piece.vertexCount(), 1);
-    for (int i = 0; i < piece.vertexCount(); ++i)
-    {
-      plane.row(i) = q[global[i]].transpose();
-      fixed[i] = free[global[i]] ? 0 : 1;
-    }
-    if (!relaxSymmetricDirichlet(piece, fixed, plane, options).ok())
-      return 0;
-    int moved = 0;
-    std::vector<BasePoint> before(piece.vertexCount());
-    for (int i = 0; i < piece.vertexCount(); ++i)
-      if (!fixed[i])
+      firstCopy_[v] = static_cast<int>(copyVertex_.size());
+      for (int i = 0; i < m; ++i)
       {
-        before[i] = points[global[i]];
-        points[global[i]] = chart.point(plane.row(i).transpose(), angle[global[i]]);
-        ++moved;
-      }
-    // The chart is L0's own but for the open spoke and a triangle round the
-    // centre may end wider than L0's charts take: such triangles, checked in
-    // L0's charts, hold their corners and their corners' rings for another
-    // try.
-    std::vector<int> bad;
-    for (int t : triangles)
-      if (!valid(t))
-        bad.push_back(t);
-    if (bad.empty())
-      return moved;
-    for (int i = 0; i < piece.vertexCount(); ++i)
-      if (!fixed[i])
-        points[global[i]] = before[i];
-    for (int t : bad)
-      for (int v : mesh.triangle(t))
-      {
-        held[v] = 1;
-        const int first = mesh.outgoing(v);
-        int h = first;
-        do
+        const int hh = ring[(start + i) % m];
+        if (i == 0 || cut[hh])
         {
-          held[mesh.to(h)] = 1;
-          h = mesh.nextAroundVertex(h);
-        } while (h != first);
+          copyVertex_.push_back(v);
+          copyPatch_.push_back(net.patchOfTriangle[EditableMesh::triangleOf(hh)]);
+          copyPosition_.push_back(Vec2::Zero());
+        }
+        copyOfCorner_[hh] = static_cast<int>(copyVertex_.size()) - 1;
       }
-  }
-  return 0;
-}
+    }
+    const int copies = static_cast<int>(copyVertex_.size());
+    for (int c = 0; c < copies; ++c)
+    {
+      const int v = copyVertex_[c];
+      std::array<double, 3> b;
+      if (!coordinatesInTriangle(domain, map.baseTriangle[v], map.baseCoordinates[v], copyPatch_[c], b))
+        return Status::error("global map: vertex " + std::to_string(v) + " is not on its patch's base triangle");
+      copyPosition_[c] = atBarycentric(drawing_[copyPatch_[c]], b);
+    }
 
-class Optimizer
-{
-public:
-  Optimizer(const TracedNet& net, const BaseDomain& domain, const BaseCharts& charts, std::vector<BasePoint>& points)
-    : mesh_(net.mesh)
-    , domain_(domain)
-    , charts_(charts)
-    , points_(points)
-    , pinned_(net.mesh.vertexCount(), 0)
-    , metrics_(net.mesh.triangleCount())
-  {
-    for (int v : net.landmarkVertex)
-      pinned_[v] = 1;
-    stars_.resize(domain.mesh.vertexCount());
-    for (int t = 0; t < domain.mesh.triangleCount(); ++t)
-      for (int k = 0; k < 3; ++k)
+    // Free vertices: one variable each, its first copy; another copy is
+    // the first moved across its cut edge.
+    variable_.assign(n, -1);
+    variables_ = 0;
+    for (int v = 0; v < n; ++v)
+      if (used_[v] && !pinned_[v])
+        variable_[v] = variables_++;
+    motion_.assign(copies, Motion{});
+    for (int c = 0; c < copies; ++c)
+    {
+      const int v = copyVertex_[c];
+      if (pinned_[v] || c == firstCopy_[v])
+        continue;
+      const int master = firstCopy_[v];
+      const int e = curveOf[v];
+      if (e < 0 || !inTree[e] || c != master + 1 || (c + 1 < copies && copyVertex_[c + 1] == v))
+        return Status::error("global map: vertex " + std::to_string(v) + " is cut but not on one cut curve");
+      const int a = net.baseEdges[e][0], b = net.baseEdges[e][1];
+      const int patch = copyPatch_[c];
+      const Triangle& tri = domain.mesh.triangles[patch];
+      int k = 0;
+      while (k < 3 && !((tri[k] == a && tri[(k + 1) % 3] == b) || (tri[k] == b && tri[(k + 1) % 3] == a)))
+        ++k;
+      int other = -1;
+      if (k == 3)
+        return Status::error("global map: a cut curve's patch does not hold its edge");
+      const Drawing beside = geometry_.unfold(patch, drawing_[patch], k, other);
+      if (other != copyPatch_[master])
+        return Status::error("global map: the two sides of a cut curve are not its edge's triangles");
+      motion_[c] = motionBetween(drawing_[other], beside);
+      if ((motion_[c](copyPosition_[master]) - copyPosition_[c]).norm() > 1e-6 * side_)
+        return Status::error("global map: the two sides of vertex " + std::to_string(v) + " disagree");
+    }
+    // Every corner of a copy must be where the copy is (a wedge spans
+    // patches only across curves that are not cut, drawn side by side).
+    for (int h = 0; h < mesh.halfedgeCount(); ++h)
+    {
+      const int c = copyOfCorner_[h];
+      if (c < 0)
+        continue;
+      const int v = copyVertex_[c];
+      const int patch = net.patchOfTriangle[EditableMesh::triangleOf(h)];
+      std::array<double, 3> b;
+      if (!coordinatesInTriangle(domain, map.baseTriangle[v], map.baseCoordinates[v], patch, b) ||
+        (atBarycentric(drawing_[patch], b) - copyPosition_[c]).norm() > 1e-6 * side_)
+        return Status::error("global map: vertex " + std::to_string(v) + " lies apart in two patches");
+    }
+
+    x_.resize(2 * variables_);
+    home_.assign(n, -1);
+    homeDrawing_.assign(n, Drawing{});
+    for (int v = 0; v < n; ++v)
+      if (variable_[v] >= 0)
       {
-        const int b = domain.mesh.triangles[t][k];
-        if (!stars_[b].built)
-          stars_[b].built = stars_[b].star.build(domain, t, b, domain.mesh.triangles[t][(k + 1) % 3]);
+        const int c = firstCopy_[v];
+        x_.segment<2>(2 * variable_[v]) = copyPosition_[c];
+        home_[v] = copyPatch_[c];
+        homeDrawing_[v] = drawing_[copyPatch_[c]];
       }
-    for (int t = 0; t < mesh_.triangleCount(); ++t)
+    // Each triangle's share of the energy: its area, more near a landmark.
+    weight_ = area_;
+    if (options.landmarkWeightRadius > 0.0)
     {
-      const Triangle& tri = mesh_.triangle(t);
-      const Vec3 e1 = mesh_.point(tri[1]) - mesh_.point(tri[0]), e2 = mesh_.point(tri[2]) - mesh_.point(tri[0]);
-      const double twiceArea = e1.cross(e2).norm();
-      const double length = e1.norm();
-      if (!(twiceArea > 1e-14 * (e1.squaredNorm() + e2.squaredNorm())) || !(length > 0.0))
-        continue; // degenerate: no say, as in the patch maps' relaxation
-      Eigen::Matrix2d edges;
-      const double along = e2.dot(e1) / length;
-      edges << length, along, 0.0, twiceArea / length;
-      metrics_[t].area = 0.5 * twiceArea;
-      metrics_[t].inverseEdges = edges.inverse();
-    }
-  }
-
-  /// The corners `q` in one chart: of the triangles of the corners that are
-  /// not at a base vertex, the one that lays them closest together (a chart
-  /// cut across near a base vertex spreads them round it); false if none
-  /// charts all three.
-  bool chart(const std::array<BasePoint, 3>& q, const std::array<bool, 3>& atBaseVertex, std::array<Vec2, 3>& p) const
-  {
-    double best = kInfinity;
-    std::array<Vec2, 3> trial;
-    for (int a = 0; a < 3; ++a)
-    {
-      // A landmark's own triangle is any of those round its base vertex:
-      // no guide to which way round the others lie.
-      if (atBaseVertex[a])
-        continue;
-      const int anchor = q[a].triangle;
-      if ((a > 0 && !atBaseVertex[0] && anchor == q[0].triangle) ||
-        (a > 1 && !atBaseVertex[1] && anchor == q[1].triangle))
-        continue;
-      bool charted = true;
-      for (int k = 0; k < 3 && charted; ++k)
-        charted = charts_.inFrame(anchor, q[k], trial[k]);
-      if (!charted)
-        continue;
-      const double perimeter = (trial[1] - trial[0]).norm() + (trial[2] - trial[1]).norm() + (trial[0] - trial[2]).norm();
-      if (perimeter < best)
+      const double radius = options.landmarkWeightRadius * side_;
+      for (int t = 0; t < triangles; ++t)
       {
-        best = perimeter;
-        p = trial;
+        const Triangle& tri = mesh.triangle(t);
+        const Vec3 c = (mesh.point(tri[0]) + mesh.point(tri[1]) + mesh.point(tri[2])) / 3.0;
+        double nearest = kInfinity;
+        for (int l : net.landmarkVertex)
+          nearest = std::min(nearest, (mesh.point(l) - c).squaredNorm());
+        weight_[t] *= 1.0 + (nearest > 0.0 ? std::min(options.landmarkWeightCap, radius * radius / nearest)
+                                           : options.landmarkWeightCap);
       }
     }
-    return best < kInfinity;
+    buildPattern();
+    return {};
   }
 
-  /// Energy of triangle t, infinite if its corners have no common chart.
-  double energy(int t) const
+  double side() const { return side_; }
+
+  /// The base edge between base vertices `a` and `b`, -1 if none.
+  int baseEdge(int a, int b) const
   {
-    const Triangle& tri = mesh_.triangle(t);
-    std::array<Vec2, 3> p;
-    if (!chart({ points_[tri[0]], points_[tri[1]], points_[tri[2]] },
-          { pinned_[tri[0]] != 0, pinned_[tri[1]] != 0, pinned_[tri[2]] != 0 }, p))
-      return kInfinity;
-    return triangleEnergy(metrics_[t], p, side_);
+    const auto found = edgeOf_.find(static_cast<long long>(std::min(a, b)) * baseVertices_ + std::max(a, b));
+    return found == edgeOf_.end() ? -1 : found->second;
   }
+  double totalArea() const { return totalArea_; }
+  const Eigen::VectorXd& x() const { return x_; }
 
-  /// Whether triangle t keeps its orientation in every chart of its
-  /// corners' base triangles that holds all three (so that every later
-  /// step, which may read it in any of them, sees it unflipped), and has
-  /// a finite energy.
-  bool consistent(int t) const
+  /// Corner h's place for the variables `x` (its copy moved), and its
+  /// direction for the step `d` (zero for a landmark).
+  Vec2 corner(int h, const Eigen::VectorXd& x) const
   {
-    if (!std::isfinite(energy(t)))
-      return false;
-    const Triangle& tri = mesh_.triangle(t);
-    const int home = points_[tri[0]].triangle;
-    if (!pinned_[tri[0]] && !pinned_[tri[1]] && !pinned_[tri[2]] && points_[tri[1]].triangle == home &&
-      points_[tri[2]].triangle == home)
-      return true; // inside one base triangle: one shape in every chart
-    // The chart of each corner's triangle: the cut reads the triangle in
-    // one of them.
-    for (int v : tri)
-    {
-      const int anchor = points_[v].triangle;
-      std::array<Vec2, 3> p;
-      bool charted = true;
-      for (int k = 0; k < 3 && charted; ++k)
-        charted = charts_.inFrame(anchor, points_[tri[k]], p[k]);
-      if (charted && !(cross2(p[1] - p[0], p[2] - p[0]) > 0.0))
-        return false;
-    }
-    return !wrapsBaseVertex(tri);
+    const int c = copyOfCorner_[h];
+    const int v = copyVertex_[c];
+    if (pinned_[v])
+      return copyPosition_[c];
+    return motion_[c](x.segment<2>(2 * variable_[v]));
   }
-
-  /// Whether a triangle with no corner at a base vertex reaches more than
-  /// half a turn round it, its corners all in that vertex's star: drawn in
-  /// the star, it would hold the vertex, so the map would wrap round the
-  /// landmark there, which no chart of its corners' triangles shows (each
-  /// draws it unflipped) and along which no curve can be cut.
-  bool wrapsBaseVertex(const Triangle& tri) const
+  Vec2 cornerStep(int h, const Eigen::VectorXd& d) const
   {
-    for (int b : domain_.mesh.triangles[points_[tri[0]].triangle])
-    {
-      const Star& around = stars_[b];
-      if (!around.built)
-        continue;
-      std::array<double, 3> angle{};
-      bool inStar = true;
-      for (int k = 0; k < 3 && inStar; ++k)
-      {
-        double radius = 0.0;
-        inStar = around.star.polar(points_[tri[k]], radius, angle[k]) && radius > 0.0;
-      }
-      if (!inStar)
-        continue;
-      std::sort(angle.begin(), angle.end());
-      const double turn = around.star.turn();
-      const double widest = std::max({ angle[1] - angle[0], angle[2] - angle[1], angle[0] + turn - angle[2] });
-      if (turn - widest > kPi)
-        return true;
-    }
-    return false;
+    const int c = copyOfCorner_[h];
+    const int v = copyVertex_[c];
+    if (pinned_[v])
+      return Vec2::Zero();
+    return motion_[c].rotation * d.segment<2>(2 * variable_[v]);
   }
 
-  double totalEnergy() const
+  Mat2 jacobian(int t, const Eigen::VectorXd& x) const
+  {
+    const Vec2 p0 = corner(3 * t, x), p1 = corner(3 * t + 1, x), p2 = corner(3 * t + 2, x);
+    Mat2 edges;
+    edges.col(0) = p1 - p0;
+    edges.col(1) = p2 - p0;
+    return edges * inverseEdges_[t];
+  }
+
+  bool flipped(int t, const Eigen::VectorXd& x) const
+  {
+    const Vec2 p0 = corner(3 * t, x), p1 = corner(3 * t + 1, x), p2 = corner(3 * t + 2, x);
+    return !(cross2(p1 - p0, p2 - p0) > 0.0);
+  }
+
+  double energy(const Eigen::VectorXd& x) const
   {
     double sum = 0.0;
-    for (int t = 0; t < mesh_.triangleCount(); ++t)
-      sum += energy(t);
+    for (int t = 0; t < mesh_->triangleCount(); ++t)
+    {
+      if (mesh_->isRemoved(t))
+        continue;
+      if (area_[t] > 0.0)
+        sum += weight_[t] * density(jacobian(t, x));
+      else if (flipped(t, x))
+        return kInfinity;
+      if (!std::isfinite(sum))
+        return kInfinity;
+    }
     return sum;
   }
 
-  double totalArea() const
+  /// The energy without the landmark weights.
+  double plainEnergy(const Eigen::VectorXd& x) const
   {
     double sum = 0.0;
-    for (const Metric& m : metrics_)
-      sum += m.area;
+    for (int t = 0; t < mesh_->triangleCount(); ++t)
+      if (!mesh_->isRemoved(t) && area_[t] > 0.0)
+        sum += area_[t] * density(jacobian(t, x));
     return sum;
   }
 
-  double largestDistortion() const
+  double largestDensity(const Eigen::VectorXd& x) const
   {
     double largest = 0.0;
-    for (int t = 0; t < mesh_.triangleCount(); ++t)
-      if (metrics_[t].area > 0.0)
-        largest = std::max(largest, energy(t) / (4.0 * metrics_[t].weight * metrics_[t].area));
+    for (int t = 0; t < mesh_->triangleCount(); ++t)
+      if (!mesh_->isRemoved(t) && area_[t] > 0.0)
+        largest = std::max(largest, density(jacobian(t, x)));
     return largest;
   }
 
-  bool pinned(int v) const { return pinned_[v] != 0; }
-
-  /// The side of every base triangle, drawn equilateral.
-  void setSide(double side) { side_ = side; }
-
-  /// Weighs each triangle's energy (one factor per triangle, or none: 1).
-  void setWeights(const std::vector<double>& weights)
+  /// The largest step along `d` that keeps every triangle unflipped.
+  double stepBound(const Eigen::VectorXd& d) const
   {
-    for (int t = 0; t < mesh_.triangleCount(); ++t)
-      metrics_[t].weight = weights.empty() ? 1.0 : weights[t];
-  }
-
-  /// The unweighted energy.
-  double totalPlainEnergy() const
-  {
-    double sum = 0.0;
-    for (int t = 0; t < mesh_.triangleCount(); ++t)
-      sum += energy(t) / metrics_[t].weight;
-    return sum;
-  }
-
-  /// One move of free vertex v; true if it moved.
-  bool relax(int v)
-  {
-    // The ring in one chart: of the triangles of v and its neighbours, the
-    // one that lays the ring most tightly.
-    candidates_.assign(1, points_[v].triangle);
-    const int first = mesh_.outgoing(v);
-    int h = first;
-    do
+    double bound = kInfinity;
+    for (int t = 0; t < mesh_->triangleCount(); ++t)
     {
-      const int u = mesh_.to(h);
-      if (!pinned_[u] && std::find(candidates_.begin(), candidates_.end(), points_[u].triangle) == candidates_.end())
-        candidates_.push_back(points_[u].triangle);
-      h = mesh_.nextAroundVertex(h);
-    } while (h != first);
-    int anchor = -1;
-    double best = kInfinity;
-    for (int candidate : candidates_)
-    {
-      Vec2 at;
-      if (!charts_.inFrame(candidate, points_[v], at))
+      if (mesh_->isRemoved(t))
         continue;
-      double length = 0.0;
-      bool charted = true;
-      h = first;
-      do
-      {
-        Vec2 p;
-        charted = charts_.inFrame(candidate, points_[mesh_.to(h)], p);
-        length += (p - at).norm();
-        h = mesh_.nextAroundVertex(h);
-      } while (charted && h != first);
-      if (charted && length < best)
-      {
-        best = length;
-        anchor = candidate;
-      }
+      const Vec2 p0 = corner(3 * t, x_), p1 = corner(3 * t + 1, x_), p2 = corner(3 * t + 2, x_);
+      const Vec2 d0 = cornerStep(3 * t, d), d1 = cornerStep(3 * t + 1, d), d2 = cornerStep(3 * t + 2, d);
+      bound = std::min(bound, flipBound(p1 - p0, p2 - p0, d1 - d0, d2 - d0));
     }
-    if (anchor < 0)
-      return false;
+    return bound;
+  }
 
-    ring_.clear();
-    Vec2 at;
-    charts_.inFrame(anchor, points_[v], at);
-    double shortest = kInfinity;
-    h = first;
-    do
+  /// Gradient and projected Hessian at the current variables.
+  void assemble(Eigen::VectorXd& gradient)
+  {
+    gradient.setZero(2 * variables_);
+    std::fill(hessian_.valuePtr(), hessian_.valuePtr() + hessian_.nonZeros(), 0.0);
+    double* values = hessian_.valuePtr();
+    Eigen::Vector4d g;
+    Eigen::Matrix4d hf;
+    for (int t = 0; t < mesh_->triangleCount(); ++t)
     {
-      const int t = EditableMesh::triangleOf(h);
-      const Triangle& tri = mesh_.triangle(t);
-      Around around;
-      around.triangle = t;
+      if (mesh_->isRemoved(t) || !(area_[t] > 0.0))
+        continue;
+      const Mat2 f = jacobian(t, x_);
+      densityDerivatives(f, g, hf);
+      // vec(F) = B p, p = (p0x, p0y, p1x, p1y, p2x, p2y).
+      const Mat2& m = inverseEdges_[t];
+      Eigen::Matrix<double, 4, 6> b = Eigen::Matrix<double, 4, 6>::Zero();
+      for (int j = 0; j < 2; ++j)     // column of F
+        for (int i = 0; i < 2; ++i)   // row of F
+        {
+          const int row = 2 * j + i;
+          b(row, 2 + i) = m(0, j);
+          b(row, 4 + i) = m(1, j);
+          b(row, i) = -(m(0, j) + m(1, j));
+        }
+      const Eigen::Matrix<double, 6, 1> gp = weight_[t] * b.transpose() * g;
+      const Eigen::Matrix<double, 6, 6> hp = weight_[t] * b.transpose() * hf * b;
+      std::array<const Mat2*, 3> rotation{};
+      std::array<int, 3> var{};
       for (int k = 0; k < 3; ++k)
       {
-        if (tri[k] == v)
-        {
-          around.corner = k;
-          continue;
-        }
-        charts_.inFrame(anchor, points_[tri[k]], around.p[k]);
-        shortest = std::min(shortest, (around.p[k] - at).norm());
+        const int h = 3 * t + k;
+        const int c = copyOfCorner_[h];
+        const int v = copyVertex_[c];
+        var[k] = variable_[v];
+        rotation[k] = &motion_[c].rotation;
       }
-      ring_.push_back(around);
-      h = mesh_.nextAroundVertex(h);
-    } while (h != first);
-    if (!(shortest > 0.0) || !std::isfinite(shortest))
-      return false;
-
-    Vec2 gradient = Vec2::Zero();
-    const double e0 = ringEnergy(at, &gradient);
-    const double slope = gradient.norm();
-    if (!std::isfinite(e0) || !(slope > 0.0) || !std::isfinite(slope))
-      return false;
-    const Vec2 direction = -gradient / slope;
-    const double probe = 1e-4 * shortest;
-    Vec2 probeGradient = Vec2::Zero();
-    ringEnergy(at + probe * direction, &probeGradient);
-    const double curvature = (probeGradient.dot(direction) + slope) / probe;
-    double step = kLongestStepShare * shortest;
-    if (curvature > 0.0 && std::isfinite(curvature))
-      step = std::min(step, slope / curvature);
-    const BasePoint before = points_[v];
-    for (int attempt = 0; attempt <= kBacktrackingSteps; ++attempt, step *= 0.5)
-    {
-      const Vec2 candidate = at + step * direction;
-      if (!(ringEnergy(candidate, nullptr) < e0))
-        continue;
-      BasePoint moved;
-      if (!charts_.locate(anchor, candidate, moved))
-        continue;
-      // Every triangle of the ring must keep a chart of its own corners,
-      // with the energy this chart gave it, stay unflipped in every chart
-      // of its corners' triangles and not wrap round a base vertex.
-      points_[v] = moved;
-      double check = 0.0;
-      for (const Around& around : ring_)
-        check += energy(around.triangle);
-      if (check < e0 &&
-        std::all_of(ring_.begin(), ring_.end(), [&](const Around& around) { return consistent(around.triangle); }))
-        return true;
-      points_[v] = before;
+      for (int a = 0; a < 3; ++a)
+      {
+        if (var[a] < 0)
+          continue;
+        gradient.segment<2>(2 * var[a]) += rotation[a]->transpose() * gp.segment<2>(2 * a);
+        for (int bb = 0; bb < 3; ++bb)
+        {
+          if (var[bb] < 0)
+            continue;
+          const Mat2 block = rotation[a]->transpose() * hp.block<2, 2>(2 * a, 2 * bb) * *rotation[bb];
+          const int* slot = &slots_[36 * t + 12 * a + 4 * bb];
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+              if (slot[2 * i + j] >= 0)
+                values[slot[2 * i + j]] += block(i, j);
+        }
+      }
     }
-    return false;
+    // A vertex only on flat triangles has no say: keep the matrix definite.
+    double trace = 0.0;
+    for (int i = 0; i < 2 * variables_; ++i)
+      trace += values[diagonal_[i]];
+    const double shift = 1e-9 * trace / std::max(1, 2 * variables_) + 1e-300;
+    for (int i = 0; i < 2 * variables_; ++i)
+      values[diagonal_[i]] += shift;
+  }
+
+  const Eigen::SparseMatrix<double>& hessian() const { return hessian_; }
+
+  /// Moves the variables to `next`, following every free vertex's place
+  /// across L0's triangles.
+  bool moveTo(const Eigen::VectorXd& next)
+  {
+    for (std::size_t v = 0; v < variable_.size(); ++v)
+    {
+      const int i = variable_[v];
+      if (i < 0)
+        continue;
+      if (!geometry_.walk(home_[v], homeDrawing_[v], x_.segment<2>(2 * i), next.segment<2>(2 * i)))
+        return false;
+    }
+    x_ = next;
+    return true;
+  }
+
+  /// Cuts the surface along the map's curves, the preimages of L0's edges,
+  /// exactly: every mesh edge a curve crosses is split where it crosses,
+  /// every triangle a curve runs through is cut along it, so that each
+  /// curve runs along mesh edges and each triangle lies in one base
+  /// triangle. The map is unchanged: a new vertex lies on its base edge, a
+  /// triangle's image is a piece of its old image.
+  Status cut(const StraightenedNet& straight, StraightenedNet& out, PatchParameterization& outMap) const
+  {
+    const EditableMesh& mesh = *mesh_;
+    const TracedNet& net = *net_;
+    const BaseDomain& domain = *domain_;
+    const int n = mesh.vertexCount();
+    const int triangles = mesh.triangleCount();
+    const int baseEdges = static_cast<int>(net.baseEdges.size());
+    const int baseVertices = domain.mesh.vertexCount();
+    // Closer than this to a curve, a vertex is put on it: a curve passing
+    // nearer would cut slivers round it, whose patch rounding decides.
+    const double snap = 1e-6 * side_;
+    std::vector<int> landmarkOf(n, -1);
+    for (int b = 0; b < baseVertices; ++b)
+      landmarkOf[net.landmarkVertex[b]] = b;
+    const auto incident = [&](int landmark, int e) {
+      return net.baseEdges[e][0] == landmark || net.baseEdges[e][1] == landmark;
+    };
+
+    // Per surface triangle, the base triangles its image overlaps, drawn in
+    // its own frame (found across the base edges that cross its inside,
+    // so never round a landmark onto another sheet).
+    std::vector<int> overlayStart(triangles + 1, 0), overlayBase;
+    std::vector<Drawing> overlayDrawing;
+    std::vector<std::array<Vec2, 3>> cornerAt(triangles);
+    for (int t = 0; t < triangles; ++t)
+    {
+      overlayStart[t] = static_cast<int>(overlayBase.size());
+      const Triangle& tri = mesh.triangle(t);
+      std::array<Vec2, 3>& p = cornerAt[t];
+      for (int k = 0; k < 3; ++k)
+        p[k] = corner(3 * t + k, x_);
+      int base = -1;
+      Drawing drawing;
+      int free = -1;
+      for (int k = 0; k < 3 && base < 0; ++k)
+        if (variable_[tri[k]] >= 0)
+        {
+          const Motion& m = motion_[copyOfCorner_[3 * t + k]];
+          base = home_[tri[k]];
+          for (int c = 0; c < 3; ++c)
+            drawing[c] = m(homeDrawing_[tri[k]][c]);
+          free = k;
+        }
+      if (base < 0)
+      {
+        base = net.patchOfTriangle[t];
+        drawing = drawing_[base];
+      }
+      if (free >= 0 && !(overlapArea(p, drawing) > 0.0))
+      {
+        // The free corner on an edge of its base triangle, the triangle
+        // beyond it: start across that edge.
+        const std::array<double, 3> b = barycentricIn(drawing, p[free]);
+        const int c = static_cast<int>(std::min_element(b.begin(), b.end()) - b.begin());
+        int next = -1;
+        drawing = geometry_.unfold(base, drawing, (c + 1) % 3, next);
+        base = next;
+      }
+      std::vector<int> queue{ base };
+      std::vector<Drawing> drawings{ drawing };
+      for (std::size_t i = 0; i < queue.size(); ++i)
+      {
+        if (overlapArea(p, drawings[i]) > 0.0)
+        {
+          overlayBase.push_back(queue[i]);
+          overlayDrawing.push_back(drawings[i]);
+        }
+        for (int j = 0; j < 3; ++j)
+        {
+          if (!crossesInside(p, drawings[i][j], drawings[i][(j + 1) % 3]))
+            continue;
+          int next = -1;
+          const Drawing beside = geometry_.unfold(queue[i], drawings[i], j, next);
+          if (std::find(queue.begin(), queue.end(), next) != queue.end())
+            continue;
+          queue.push_back(next);
+          drawings.push_back(beside);
+        }
+      }
+      if (overlayStart[t] == static_cast<int>(overlayBase.size()))
+        return Status::error("cutting along the map: triangle " + std::to_string(t) + " overlaps no base triangle");
+    }
+    overlayStart[triangles] = static_cast<int>(overlayBase.size());
+
+    // Each base edge drawn in a triangle's frame, from its first end to its
+    // second (net.baseEdges order).
+    const auto edgeIn = [&](int t, int e, Vec2& a, Vec2& b) {
+      for (int i = overlayStart[t]; i < overlayStart[t + 1]; ++i)
+      {
+        const Triangle& bt = domain.mesh.triangles[overlayBase[i]];
+        for (int j = 0; j < 3; ++j)
+          if (baseEdge(bt[j], bt[(j + 1) % 3]) == e)
+          {
+            const bool forward = bt[j] == net.baseEdges[e][0];
+            a = overlayDrawing[i][forward ? j : (j + 1) % 3];
+            b = overlayDrawing[i][forward ? (j + 1) % 3 : j];
+            return true;
+          }
+      }
+      return false;
+    };
+
+    // A vertex within `snap` of a base edge (in a triangle's drawing of one
+    // of the base triangles it overlaps, so on the right sheet) lies on it.
+    std::vector<int> onEdge(n, -1);
+    std::vector<double> onEdgeAt(n, 0.0);
+    std::vector<int> newEdge;        // per new vertex: its base edge
+    std::vector<double> newAlong;    // and its place along it
+    for (int t = 0; t < triangles; ++t)
+      for (int i = overlayStart[t]; i < overlayStart[t + 1]; ++i)
+      {
+        const Triangle& bt = domain.mesh.triangles[overlayBase[i]];
+        for (int j = 0; j < 3; ++j)
+        {
+          const int e = baseEdge(bt[j], bt[(j + 1) % 3]);
+          Vec2 a = Vec2::Zero(), b = Vec2::Zero();
+          edgeIn(t, e, a, b); // an edge of one of t's own base triangles
+          const Vec2 d = b - a;
+          for (int k = 0; k < 3; ++k)
+          {
+            const int v = mesh.triangle(t)[k];
+            if (landmarkOf[v] >= 0 || onEdge[v] >= 0)
+              continue;
+            const double f = cross2(d, cornerAt[t][k] - a) / d.norm();
+            const double along = (cornerAt[t][k] - a).dot(d) / d.squaredNorm();
+            if (std::abs(f) < snap && along > 0.0 && along < 1.0)
+            {
+              onEdge[v] = e;
+              onEdgeAt[v] = along;
+            }
+          }
+        }
+      }
+    const auto vertexOnEdge = [&](int v, int e) {
+      if (v >= n)
+        return newEdge[v - n] == e;
+      if (landmarkOf[v] >= 0)
+        return incident(landmarkOf[v], e);
+      return onEdge[v] == e;
+    };
+
+    // Where curves cross mesh edges: one new vertex per crossing, keyed by
+    // the mesh edge (lower vertex first) and the base edge.
+    TriangleMesh cutMesh;
+    cutMesh.points = mesh.points();
+    std::vector<SurfacePoint> inputPoint = straight.inputPoint;
+    std::map<std::pair<long long, int>, int> crossing; // (mesh edge, base edge) -> vertex
+    const auto meshEdgeKey = [&](int u, int w) { return static_cast<long long>(std::min(u, w)) * n + std::max(u, w); };
+    for (int h = 0; h < mesh.halfedgeCount(); ++h)
+    {
+      const int u = mesh.from(h), w = mesh.to(h);
+      if (u > w)
+        continue; // each edge once, from its lower end, in its triangle's frame
+      const int t = EditableMesh::triangleOf(h);
+      const Vec2 pu = cornerAt[t][h % 3], pw = cornerAt[t][(h % 3 + 1) % 3];
+      for (int i = overlayStart[t]; i < overlayStart[t + 1]; ++i)
+      {
+        const Triangle& bt = domain.mesh.triangles[overlayBase[i]];
+        for (int j = 0; j < 3; ++j)
+        {
+          const int e = baseEdge(bt[j], bt[(j + 1) % 3]);
+          if (crossing.count({ meshEdgeKey(u, w), e }))
+            continue;
+          if (vertexOnEdge(u, e) || vertexOnEdge(w, e))
+            continue;
+          Vec2 a = Vec2::Zero(), b = Vec2::Zero();
+          edgeIn(t, e, a, b); // an edge of one of t's own base triangles
+          const Vec2 d = b - a;
+          // Both ends' sides in this one drawing (a line's far part lies
+          // elsewhere on another sheet round a landmark).
+          double fu = cross2(d, pu - a) / d.norm(), fw = cross2(d, pw - a) / d.norm();
+          if (std::abs(fu) < snap)
+            fu = fu < 0.0 ? -snap : snap;
+          if (std::abs(fw) < snap)
+            fw = fw < 0.0 ? -snap : snap;
+          if (!((fu < 0.0 && fw > 0.0) || (fu > 0.0 && fw < 0.0)))
+            continue;
+          const double at = fu / (fu - fw);
+          const Vec2 x = pu + at * (pw - pu);
+          const double along = (x - a).dot(b - a) / (b - a).squaredNorm();
+          if (along < -1e-9 || along > 1.0 + 1e-9)
+            continue; // the line's extension beyond a landmark
+          const int v = cutMesh.vertexCount();
+          cutMesh.points.push_back((1.0 - at) * mesh.point(u) + at * mesh.point(w));
+          inputPoint.push_back(interpolate(straight.inputPoint[u], straight.inputPoint[w], at));
+          newEdge.push_back(e);
+          newAlong.push_back(std::clamp(along, 0.0, 1.0));
+          crossing[{ meshEdgeKey(u, w), e }] = v;
+        }
+      }
+    }
+    const auto crossingOn = [&](int u, int w, int e) {
+      const auto found = crossing.find({ meshEdgeKey(u, w), e });
+      return found == crossing.end() ? -1 : found->second;
+    };
+    // Each triangle cut along the curves through it.
+    std::vector<int> inputTriangle;
+    std::vector<int> patchOf;
+    std::vector<double> pieceArea; // per new triangle, its image's area
+    std::vector<std::vector<std::pair<int, int>>> curveEdges(baseEdges);
+    for (int t = 0; t < triangles; ++t)
+    {
+      const Triangle& tri = mesh.triangle(t);
+      // The boundary, corners and crossings counter-clockwise.
+      std::vector<int> ring;
+      std::vector<Vec2> at;
+      std::vector<int> sideOfPoint; // the triangle edge a point lies on (-1: a corner)
+      std::vector<int> cornerOfPoint;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int u = tri[k], w = tri[(k + 1) % 3];
+        ring.push_back(u);
+        at.push_back(cornerAt[t][k]);
+        sideOfPoint.push_back(-1);
+        cornerOfPoint.push_back(k);
+        std::vector<std::pair<double, int>> along;
+        for (int i = overlayStart[t]; i < overlayStart[t + 1]; ++i)
+        {
+          const Triangle& bt = domain.mesh.triangles[overlayBase[i]];
+          for (int j = 0; j < 3; ++j)
+          {
+            const int v = crossingOn(u, w, baseEdge(bt[j], bt[(j + 1) % 3]));
+            if (v < 0)
+              continue;
+            const Vec3 d = mesh.point(w) - mesh.point(u);
+            const double s = (cutMesh.points[v] - mesh.point(u)).dot(d) / d.squaredNorm();
+            if (std::find_if(along.begin(), along.end(), [&](const auto& a) { return a.second == v; }) == along.end())
+              along.push_back({ s, v });
+          }
+        }
+        std::sort(along.begin(), along.end());
+        for (const auto& [s, v] : along)
+        {
+          ring.push_back(v);
+          at.push_back(cornerAt[t][k] + s * (cornerAt[t][(k + 1) % 3] - cornerAt[t][k]));
+          sideOfPoint.push_back(k);
+          cornerOfPoint.push_back(-1);
+        }
+      }
+      const int m = static_cast<int>(ring.size());
+      // Chords: the two boundary points of each base edge through it.
+      std::vector<std::pair<int, int>> chords;
+      std::vector<int> seen;
+      for (int i = overlayStart[t]; i < overlayStart[t + 1]; ++i)
+      {
+        const Triangle& bt = domain.mesh.triangles[overlayBase[i]];
+        for (int j = 0; j < 3; ++j)
+        {
+          const int e = baseEdge(bt[j], bt[(j + 1) % 3]);
+          if (std::find(seen.begin(), seen.end(), e) != seen.end())
+            continue;
+          seen.push_back(e);
+          std::vector<int> points;
+          for (int r = 0; r < m; ++r)
+            if (vertexOnEdge(ring[r], e))
+              points.push_back(r);
+          if (points.size() < 2)
+          {
+            if (points.size() == 1 && cornerOfPoint[points[0]] < 0)
+              return Status::error("cutting along the map: the curve of L0's edge " + std::to_string(e) +
+                " enters triangle " + std::to_string(t) + " but does not leave it");
+            continue;
+          }
+          if (points.size() > 2)
+            return Status::error("cutting along the map: the curve of L0's edge " + std::to_string(e) +
+              " meets triangle " + std::to_string(t) + " " + std::to_string(points.size()) + " times");
+          const int a = points[0], b = points[1];
+          if (cornerOfPoint[a] >= 0 && cornerOfPoint[b] >= 0)
+          {
+            // Two corners: along the triangle's side between them (a straight
+            // curve through two corners runs along that side).
+            curveEdges[e].push_back({ ring[a], ring[b] });
+            continue;
+          }
+          if ((sideOfPoint[a] >= 0 && sideOfPoint[a] == sideOfPoint[b]) ||
+            (cornerOfPoint[a] >= 0 && (sideOfPoint[b] == cornerOfPoint[a] || sideOfPoint[b] == (cornerOfPoint[a] + 2) % 3)) ||
+            (cornerOfPoint[b] >= 0 && (sideOfPoint[a] == cornerOfPoint[b] || sideOfPoint[a] == (cornerOfPoint[b] + 2) % 3)))
+            return Status::error("cutting along the map: the curve of L0's edge " + std::to_string(e) +
+              " runs along a side of triangle " + std::to_string(t) + " it crosses");
+          chords.push_back({ a, b });
+          curveEdges[e].push_back({ ring[a], ring[b] });
+        }
+      }
+      // The pieces the chords cut, each triangulated.
+      std::vector<std::vector<int>> pieces{ std::vector<int>(m) };
+      for (int i = 0; i < m; ++i)
+        pieces[0][i] = i;
+      for (const auto& [a, b] : chords)
+      {
+        bool split = false;
+        for (std::size_t q = 0; q < pieces.size() && !split; ++q)
+        {
+          std::vector<int>& piece = pieces[q];
+          const auto ia = std::find(piece.begin(), piece.end(), a), ib = std::find(piece.begin(), piece.end(), b);
+          if (ia == piece.end() || ib == piece.end())
+            continue;
+          std::size_t i = ia - piece.begin(), j = ib - piece.begin();
+          if (i > j)
+            std::swap(i, j);
+          std::vector<int> first(piece.begin() + i, piece.begin() + j + 1);
+          std::vector<int> second(piece.begin() + j, piece.end());
+          second.insert(second.end(), piece.begin(), piece.begin() + i + 1);
+          piece = std::move(first);
+          pieces.push_back(std::move(second));
+          split = true;
+        }
+        if (!split)
+          return Status::error("cutting along the map: two curves cross in triangle " + std::to_string(t));
+      }
+      for (const std::vector<int>& piece : pieces)
+      {
+        Vec2 centre = Vec2::Zero();
+        for (int r : piece)
+          centre += at[r];
+        centre /= static_cast<double>(piece.size());
+        int patch = -1;
+        double best = -kInfinity;
+        for (int i = overlayStart[t]; i < overlayStart[t + 1]; ++i)
+        {
+          const std::array<double, 3> b = barycentricIn(overlayDrawing[i], centre);
+          const double lowest = std::min({ b[0], b[1], b[2] });
+          if (lowest > best)
+          {
+            best = lowest;
+            patch = overlayBase[i];
+          }
+        }
+        std::vector<int> polygon = piece;
+        while (polygon.size() >= 3)
+        {
+          // The ear with the widest smallest angle, never a flat one.
+          const int size = static_cast<int>(polygon.size());
+          int ear = -1;
+          double widest = -1.0;
+          for (int r = 0; r < size; ++r)
+          {
+            const Vec2& p0 = at[polygon[(r + size - 1) % size]];
+            const Vec2& p1 = at[polygon[r]];
+            const Vec2& p2 = at[polygon[(r + 1) % size]];
+            const double area = cross2(p1 - p0, p2 - p0);
+            if (!(area > 1e-14 * ((p1 - p0).squaredNorm() + (p2 - p0).squaredNorm())) && size > 3)
+              continue;
+            const double angle = smallestAngle(p0, p1, p2);
+            if (angle > widest)
+            {
+              widest = angle;
+              ear = r;
+            }
+          }
+          if (ear < 0)
+            ear = 0;
+          cutMesh.triangles.push_back({ ring[polygon[(ear + size - 1) % size]], ring[polygon[ear]],
+            ring[polygon[(ear + 1) % size]] });
+          inputTriangle.push_back(straight.inputTriangle[t]);
+          patchOf.push_back(patch);
+          {
+            const Vec2& q0 = at[polygon[(ear + size - 1) % size]];
+            pieceArea.push_back(0.5 * cross2(at[polygon[ear]] - q0, at[polygon[(ear + 1) % size]] - q0));
+          }
+          polygon.erase(polygon.begin() + ear);
+        }
+      }
+    }
+
+    // The new layout: its curves chained from landmark to landmark.
+    out = StraightenedNet{};
+    if (Status s = out.net.mesh.build(cutMesh); !s.ok())
+      return Status::error("cutting along the map: " + s.message());
+    out.net.baseEdges = net.baseEdges;
+    out.net.leftTriangle = net.leftTriangle;
+    out.net.rightTriangle = net.rightTriangle;
+    out.net.landmarkVertex = net.landmarkVertex;
+    out.net.curves.assign(baseEdges, {});
+    for (int e = 0; e < baseEdges; ++e)
+    {
+      std::unordered_map<int, std::vector<int>> next;
+      for (const auto& [a, b] : curveEdges[e])
+      {
+        std::vector<int>& na = next[a];
+        if (std::find(na.begin(), na.end(), b) == na.end())
+        {
+          na.push_back(b);
+          next[b].push_back(a);
+        }
+      }
+      std::vector<int>& curve = out.net.curves[e];
+      int v = net.landmarkVertex[net.baseEdges[e][0]], previous = -1;
+      const int end = net.landmarkVertex[net.baseEdges[e][1]];
+      curve.push_back(v);
+      while (v != end)
+      {
+        const std::vector<int>& around = next[v];
+        int step = -1;
+        for (int u : around)
+          if (u != previous)
+            step = u;
+        if (step < 0 || around.size() > (v == curve.front() ? 1u : 2u) || curve.size() > next.size())
+          return Status::error("cutting along the map: the curve of L0's edge " + std::to_string(e) +
+            " does not run from landmark to landmark");
+        previous = v;
+        v = step;
+        curve.push_back(v);
+      }
+    }
+    if (Status s = labelPatches(out.net); !s.ok())
+      return Status::error("cutting along the map: " + s.message());
+    // The curves' patches and each piece's own image agree but for
+    // slivers, whose image is within rounding of a curve.
+    int disagree = 0;
+    for (int t = 0; t < out.net.mesh.triangleCount(); ++t)
+      if (out.net.patchOfTriangle[t] != patchOf[t] && pieceArea[t] > 1e-12 * side_ * side_)
+        ++disagree;
+    if (disagree > 0)
+      return Status::error("cutting along the map: " + std::to_string(disagree) +
+        " triangles lie in another patch than their curves say");
+    out.inputPoint = std::move(inputPoint);
+    out.inputTriangle = std::move(inputTriangle);
+
+    // Every vertex's place in the lowest-numbered patch holding it.
+    const EditableMesh& cutEditable = out.net.mesh;
+    const int vertices = cutEditable.vertexCount();
+    outMap = PatchParameterization{};
+    outMap.baseTriangle.assign(vertices, -1);
+    outMap.baseCoordinates.assign(vertices, { 0.0, 0.0, 0.0 });
+    for (int t = 0; t < cutEditable.triangleCount(); ++t)
+      for (int v : cutEditable.triangle(t))
+        if (outMap.baseTriangle[v] < 0 || out.net.patchOfTriangle[t] < outMap.baseTriangle[v])
+          outMap.baseTriangle[v] = out.net.patchOfTriangle[t];
+    for (int v = 0; v < vertices; ++v)
+    {
+      const int patch = outMap.baseTriangle[v];
+      std::array<double, 3>& c = outMap.baseCoordinates[v];
+      int from = -1;
+      std::array<double, 3> place{ 0.0, 0.0, 0.0 };
+      if (v < n && landmarkOf[v] >= 0)
+      {
+        const Triangle& bt = domain.mesh.triangles[patch];
+        c = { 0.0, 0.0, 0.0 };
+        c[std::find(bt.begin(), bt.end(), landmarkOf[v]) - bt.begin()] = 1.0;
+        continue;
+      }
+      const int e = v >= n ? newEdge[v - n] : onEdge[v];
+      if (e < 0)
+        continue; // off the curves: from the overlay below
+      const double along = v >= n ? newAlong[v - n] : onEdgeAt[v];
+      from = net.leftTriangle[e];
+      const Triangle& bt = domain.mesh.triangles[from];
+      for (int k = 0; k < 3; ++k)
+        place[k] = bt[k] == net.baseEdges[e][0] ? 1.0 - along : bt[k] == net.baseEdges[e][1] ? along : 0.0;
+      if (!coordinatesInTriangle(domain, from, place, patch, c))
+        return Status::error("cutting along the map: point " + std::to_string(v) + " on L0's edge " +
+          std::to_string(e) + " lies in patch " + std::to_string(patch) + ", away from that edge");
+    }
+    // A point off the curves: where its old triangle's image puts it in
+    // its patch (within rounding of the patch even beside a curve).
+    std::vector<char> placed(vertices, 0);
+    for (int t = 0; t < triangles; ++t)
+      for (int k = 0; k < 3; ++k)
+      {
+        const int v = mesh.triangle(t)[k];
+        if (placed[v] || landmarkOf[v] >= 0 || onEdge[v] >= 0)
+          continue;
+        for (int i = overlayStart[t]; i < overlayStart[t + 1]; ++i)
+          if (overlayBase[i] == outMap.baseTriangle[v])
+          {
+            outMap.baseCoordinates[v] = barycentricIn(overlayDrawing[i], cornerAt[t][k]);
+            placed[v] = 1;
+          }
+      }
+    for (int v = 0; v < vertices; ++v)
+    {
+      std::array<double, 3>& c = outMap.baseCoordinates[v];
+      if (v < n && landmarkOf[v] < 0 && onEdge[v] < 0 && !placed[v])
+        return Status::error("cutting along the map: point " + std::to_string(v) + " has no place in its patch");
+      double sum = 0.0;
+      for (double& x : c)
+        sum += (x = std::max(x, 0.0));
+      for (double& x : c)
+        x /= sum;
+    }
+    return {};
+  }
+
+  /// Every vertex's place in L0 (the landmarks' from `map`).
+  /// Every vertex's place (the landmarks' from `start`) and how many left
+  /// their first patch.
+  void places(const PatchParameterization& start, PatchParameterization& result, int& crossing) const
+  {
+    const int n = mesh_->vertexCount();
+    result = PatchParameterization{};
+    result.baseTriangle = start.baseTriangle;
+    result.baseCoordinates = start.baseCoordinates;
+    crossing = 0;
+    for (int v = 0; v < n; ++v)
+    {
+      if (variable_[v] < 0)
+        continue;
+      std::array<double, 3> b = barycentricIn(homeDrawing_[v], x_.segment<2>(2 * variable_[v]));
+      double sum = 0.0;
+      for (double& c : b)
+        sum += (c = std::max(c, 0.0));
+      for (double& c : b)
+        c /= sum;
+      result.baseTriangle[v] = home_[v];
+      result.baseCoordinates[v] = b;
+      if (home_[v] != copyPatch_[firstCopy_[v]])
+        ++crossing;
+    }
   }
 
 private:
-  struct Around
+  void buildPattern()
   {
-    int triangle = -1;
-    int corner = -1;
-    std::array<Vec2, 3> p;
-  };
-
-  double ringEnergy(const Vec2& at, Vec2* gradient)
-  {
-    double sum = 0.0;
-    for (Around& around : ring_)
+    const EditableMesh& mesh = *mesh_;
+    std::vector<Eigen::Triplet<double>> entries;
+    const auto keep = [](int row, int col) { return row >= col; };
+    for (int i = 0; i < 2 * variables_; ++i)
+      entries.emplace_back(i, i, 0.0);
+    for (int t = 0; t < mesh.triangleCount(); ++t)
     {
-      around.p[around.corner] = at;
-      sum += triangleEnergy(metrics_[around.triangle], around.p, side_, around.corner, gradient);
+      if (mesh.isRemoved(t) || !(area_[t] > 0.0))
+        continue;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+        {
+          const int va = variable_[mesh.triangle(t)[a]], vb = variable_[mesh.triangle(t)[b]];
+          if (va < 0 || vb < 0)
+            continue;
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+              if (keep(2 * va + i, 2 * vb + j))
+                entries.emplace_back(2 * va + i, 2 * vb + j, 0.0);
+        }
     }
-    return sum;
+    hessian_.resize(2 * variables_, 2 * variables_);
+    hessian_.setFromTriplets(entries.begin(), entries.end());
+    hessian_.makeCompressed();
+    const auto slotOf = [&](int row, int col) {
+      const int* begin = hessian_.innerIndexPtr() + hessian_.outerIndexPtr()[col];
+      const int* end = hessian_.innerIndexPtr() + hessian_.outerIndexPtr()[col + 1];
+      const int* found = std::lower_bound(begin, end, row);
+      return static_cast<int>(found - hessian_.innerIndexPtr());
+    };
+    diagonal_.resize(2 * variables_);
+    for (int i = 0; i < 2 * variables_; ++i)
+      diagonal_[i] = slotOf(i, i);
+    slots_.assign(36 * static_cast<std::size_t>(mesh.triangleCount()), -1);
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      if (mesh.isRemoved(t) || !(area_[t] > 0.0))
+        continue;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+        {
+          const int va = variable_[mesh.triangle(t)[a]], vb = variable_[mesh.triangle(t)[b]];
+          if (va < 0 || vb < 0)
+            continue;
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+              if (keep(2 * va + i, 2 * vb + j))
+                slots_[36 * t + 12 * a + 4 * b + 2 * i + j] = slotOf(2 * va + i, 2 * vb + j);
+        }
+    }
   }
 
-  /// A base vertex's star, unfolded (`built` false if it is not one fan).
-  struct Star
-  {
-    StarUnfolding star;
-    bool built = false;
-  };
-
-  const EditableMesh& mesh_;
-  const BaseDomain& domain_;
-  const BaseCharts& charts_;
-  std::vector<BasePoint>& points_;
-  std::vector<Star> stars_;
+  const EditableMesh* mesh_ = nullptr;
+  const TracedNet* net_ = nullptr;
+  const BaseDomain* domain_ = nullptr;
+  int baseVertices_ = 0;
+  std::unordered_map<long long, int> edgeOf_; ///< Base edge of a sorted pair of base vertices.
+  DomainGeometry geometry_;
   double side_ = 1.0;
+  double totalArea_ = 0.0;
+  std::vector<double> area_;
+  std::vector<double> weight_;        ///< Per triangle: its energy's factor (area x landmark weight).
+  std::vector<Mat2> inverseEdges_;
+  std::vector<char> used_;
   std::vector<char> pinned_;
-  std::vector<Metric> metrics_;
-  std::vector<Around> ring_;
-  std::vector<int> candidates_;
+  std::vector<Drawing> drawing_;      ///< Per base triangle, in the cut L0's plane.
+  std::vector<int> copyOfCorner_;     ///< Per halfedge: the copy of its start vertex in its triangle.
+  std::vector<int> copyVertex_;
+  std::vector<int> copyPatch_;
+  std::vector<Vec2> copyPosition_;    ///< Start place (fixed for a landmark's copies).
+  std::vector<int> firstCopy_;
+  std::vector<Motion> motion_;        ///< Per copy: from its vertex's first copy.
+  std::vector<int> variable_;
+  int variables_ = 0;
+  Eigen::VectorXd x_;
+  std::vector<int> home_;             ///< Per free vertex: the L0 triangle it lies in...
+  std::vector<Drawing> homeDrawing_;  ///< ... drawn in the plane of its first copy.
+  Eigen::SparseMatrix<double> hessian_;
+  std::vector<int> slots_;
+  std::vector<int> diagonal_;
 };
 
-
-/// Unflips the triangles the cut's rounding left flipped in the map
-/// `map` of the cut net `net`: in each patch that has some, the vertices off
-/// the curves within a few rings of them are placed anew by mean value
-/// weights, the rest held, the rings widened until no triangle of the patch
-/// is flipped (the whole patch at worst: a convex boundary, so Floater's
-/// map is bijective). Returns false if a patch cannot be solved.
-bool unflipPatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& map)
-{
-  if (map.flippedTriangles == 0)
-    return true;
-  const EditableMesh& mesh = net.mesh;
-  const int patchCount = domain.mesh.triangleCount();
-  std::vector<std::vector<int>> trianglesOf(patchCount);
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-    trianglesOf[net.patchOfTriangle[t]].push_back(t);
-  std::vector<char> onCurve(mesh.vertexCount(), 0);
-  for (const auto& curve : net.curves)
-    for (int v : curve)
-      onCurve[v] = 1;
-  std::vector<int> local(mesh.vertexCount(), -1);
-  for (int patch = 0; patch < patchCount; ++patch)
-  {
-    std::vector<int> global;
-    const TriangleMesh piece = extractTriangles(mesh, trianglesOf[patch], local, global);
-    const int m = piece.vertexCount();
-    Eigen::MatrixXd values(m, 2);
-    for (int i = 0; i < m; ++i)
-    {
-      std::array<double, 3> c;
-      if (!coordinatesInTriangle(domain, map.baseTriangle[global[i]], map.baseCoordinates[global[i]], patch, c))
-        return false;
-      values.row(i) << c[1], c[2];
-    }
-    for (int v : global)
-      local[v] = -1;
-    const auto flipped = [&](const Eigen::MatrixXd& x) {
-      std::vector<int> result;
-      for (int t = 0; t < piece.triangleCount(); ++t)
-      {
-        const Triangle& tri = piece.triangles[t];
-        const Vec2 a = x.row(tri[1]) - x.row(tri[0]), b = x.row(tri[2]) - x.row(tri[0]);
-        if (!(cross2(a, b) > 0.0))
-          result.push_back(t);
-      }
-      return result;
-    };
-    const std::vector<int> bad = flipped(values);
-    if (bad.empty())
-      continue;
-    std::vector<std::vector<int>> neighbours(m);
-    for (const Triangle& tri : piece.triangles)
-      for (int k = 0; k < 3; ++k)
-        neighbours[tri[k]].push_back(tri[(k + 1) % 3]);
-    std::vector<int> distance(m, -1), queue;
-    for (int t : bad)
-      for (int v : piece.triangles[t])
-        if (distance[v] < 0)
-        {
-          distance[v] = 0;
-          queue.push_back(v);
-        }
-    for (std::size_t i = 0; i < queue.size(); ++i)
-      for (int u : neighbours[queue[i]])
-        if (distance[u] < 0)
-        {
-          distance[u] = distance[queue[i]] + 1;
-          queue.push_back(u);
-        }
-    const Eigen::SparseMatrix<double> weights = meanValueWeights(piece);
-    bool solved = false;
-    for (int rings = 2; !solved; rings *= 2)
-    {
-      const bool whole = rings > m;
-      std::vector<int> fixedRow(m, -1);
-      Eigen::MatrixXd fixedValues(m, 2);
-      int fixedCount = 0;
-      for (int i = 0; i < m; ++i)
-        if (onCurve[global[i]] || (!whole && (distance[i] < 0 || distance[i] > rings)))
-        {
-          fixedRow[i] = fixedCount;
-          fixedValues.row(fixedCount++) = values.row(i);
-        }
-      Eigen::MatrixXd solution;
-      if (!solveConvexCombinationSystem(weights, fixedRow, fixedValues.topRows(fixedCount), solution).ok())
-      {
-        if (whole)
-          return false;
-        continue;
-      }
-      if (flipped(solution).empty() || whole)
-      {
-        if (!flipped(solution).empty())
-          return false;
-        // The freed vertices relaxed towards an isometry from there (the
-        // mean value map crowds a protrusion the map had given room).
-        double area = 0.0;
-        for (int t = 0; t < piece.triangleCount(); ++t)
-          area += triangleArea(piece, t);
-        if (area > 0.0)
-        {
-          const double side = std::sqrt(4.0 * area / std::sqrt(3.0));
-          Eigen::Matrix2d frame;
-          frame << side, 0.5 * side, 0.0, 0.5 * std::sqrt(3.0) * side;
-          Eigen::MatrixXd plane = solution * frame.transpose();
-          std::vector<char> fixed(m, 0);
-          for (int i = 0; i < m; ++i)
-            fixed[i] = fixedRow[i] >= 0 ? 1 : 0;
-          if (relaxSymmetricDirichlet(piece, fixed, plane).ok())
-          {
-            Eigen::MatrixXd relaxed = plane * frame.transpose().inverse();
-            for (int i = 0; i < m; ++i)
-              if (fixedRow[i] >= 0)
-                relaxed.row(i) = solution.row(i);
-            if (relaxed.allFinite() && flipped(relaxed).empty())
-              solution.swap(relaxed);
-          }
-        }
-        for (int i = 0; i < m; ++i)
-          if (fixedRow[i] < 0)
-          {
-            const int v = global[i];
-            map.baseTriangle[v] = patch; // off the curves: in this patch alone
-            map.baseCoordinates[v] = { 1.0 - solution(i, 0) - solution(i, 1), solution(i, 0), solution(i, 1) };
-          }
-        solved = true;
-      }
-    }
-  }
-  map.flippedTriangles = 0;
-  return true;
-}
 } // namespace
 
-Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const BaseCharts& charts,
-  const PatchParameterization& map, std::vector<BasePoint>& points, const GlobalMapOptions& options,
-  GlobalMapReport* report)
+namespace
 {
-  const EditableMesh& mesh = net.mesh;
-  const int n = mesh.vertexCount();
-  if (static_cast<int>(map.baseTriangle.size()) != n || static_cast<int>(map.baseCoordinates.size()) != n)
-    return Status::error("global map: the parameterization does not belong to this surface");
-  if (options.maximumSweeps < 0 || !(options.leastRelativeGain >= 0.0))
-    return Status::error("global map: sweeps must be >= 0 and the least relative gain >= 0");
-  if (!(options.landmarkWeightRadius >= 0.0) || !std::isfinite(options.landmarkWeightRadius) ||
-    !(options.landmarkWeightCap > 0.0) || !std::isfinite(options.landmarkWeightCap))
-    return Status::error("global map: the landmark weight radius must be finite and >= 0, its cap finite and > 0");
-  const int baseTriangles = domain.mesh.triangleCount();
-  std::vector<BasePoint> start(n);
-  for (int v = 0; v < n; ++v)
-  {
-    if (map.baseTriangle[v] < 0 || map.baseTriangle[v] >= baseTriangles)
-      return Status::error("global map: point " + std::to_string(v) + " has no base triangle");
-    start[v] = BaseCharts::fromBarycentric(map.baseTriangle[v], map.baseCoordinates[v]);
-  }
 
-  GlobalMapReport result;
-  Optimizer optimizer(net, domain, charts, start);
-  const double area = optimizer.totalArea();
-  if (!(area > 0.0) || baseTriangles <= 0)
-    return Status::error("global map: the surface has no area");
-  // Each base triangle equilateral, with 1/F of the surface's area.
-  optimizer.setSide(std::sqrt(4.0 * area / (std::sqrt(3.0) * baseTriangles)));
-  double energy = optimizer.totalEnergy();
+/// Projected Newton steps on `problem` until a step gains little.
+Status optimize(SeamlessProblem& problem, const GlobalMapOptions& options, GlobalMapReport& result)
+{
+  double energy = problem.energy(problem.x());
   if (!std::isfinite(energy))
     return Status::error("global map: the starting map has a flipped or crushed triangle");
-  result.distortionBefore = energy / (4.0 * area);
-  const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * baseTriangles));
+  const double isometric = 4.0 * problem.totalArea();
+  result.distortionBefore = problem.plainEnergy(problem.x()) / isometric;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  bool analyzed = false;
+  Eigen::VectorXd gradient, step, trial;
+  for (int iteration = 0; iteration < options.maximumIterations; ++iteration)
   {
-    std::vector<char> pinned(n, 0);
-    for (int v : net.landmarkVertex)
-      pinned[v] = 1;
-    SymmetricDirichletOptions relax;
-    relax.maximumIterations = options.starIterations;
-    for (int round = 0; round < options.starRounds; ++round)
+    problem.assemble(gradient);
+    if (!analyzed)
     {
-      for (int b = 0; b < domain.mesh.vertexCount(); ++b)
-        relaxStar(net, domain, b, round, side, pinned, relax,
-          [&](int t) { return optimizer.consistent(t); }, start);
-      const double next = optimizer.totalEnergy();
-      ++result.starRounds;
-      const bool settled = !(energy - next > options.leastRelativeGain * energy);
-      energy = next;
-      if (settled)
-        break;
+      solver.analyzePattern(problem.hessian());
+      analyzed = true;
     }
-  }
-  // The star solves spread the map unweighted: weighted, they denied tails
-  // and ears beside a landmark their room. The sweeps then polish it with
-  // the landmarks' rings weighted.
-  const std::vector<double> weights =
-    landmarkWeights(mesh, net.landmarkVertex, options.landmarkWeightRadius * side, options.landmarkWeightCap);
-  if (!weights.empty())
-  {
-    optimizer.setWeights(weights);
-    energy = optimizer.totalEnergy();
-  }
-  for (int sweep = 0; sweep < options.maximumSweeps; ++sweep)
-  {
-    int moved = 0;
-    for (int v = 0; v < n; ++v)
-      if (!optimizer.pinned(v))
-        moved += optimizer.relax(v) ? 1 : 0;
-    ++result.sweeps;
-    const double next = optimizer.totalEnergy();
-    const bool settled = !(energy - next > options.leastRelativeGain * energy);
+    solver.factorize(problem.hessian());
+    if (solver.info() != Eigen::Success)
+      break;
+    step = solver.solve(-gradient);
+    const double slope = gradient.dot(step);
+    if (!(slope < 0.0) || !step.allFinite())
+      break;
+    // Never as far as a triangle flattening, then back until the energy
+    // falls enough (Armijo).
+    double alpha = std::min(1.0, 0.9 * problem.stepBound(step));
+    double next = kInfinity;
+    for (int tries = 0; tries < 40; ++tries)
+    {
+      trial = problem.x() + alpha * step;
+      next = problem.energy(trial);
+      if (next <= energy + 1e-4 * alpha * slope)
+        break;
+      alpha *= 0.5;
+      next = kInfinity;
+    }
+    if (!std::isfinite(next) || !(next < energy))
+      break;
+    if (!problem.moveTo(trial))
+      return Status::error("global map: a vertex's place could not be followed across L0");
+    ++result.iterations;
+    const bool settled = energy - next < options.leastRelativeGain * energy;
     energy = next;
-    if (moved == 0 || settled)
+    if (settled)
       break;
   }
-  result.distortionAfter = optimizer.totalPlainEnergy() / (4.0 * area);
-  result.maximumDistortion = optimizer.largestDistortion();
-  for (int v = 0; v < n; ++v)
-  {
-    const int patch = net.patchOfTriangle[EditableMesh::triangleOf(mesh.outgoing(v))];
-    Vec2 inPatch;
-    if (!charts.inFrame(patch, start[v], inPatch))
-    {
-      ++result.crossingVertices;
-      continue;
-    }
-    const std::array<double, 3> b = BaseCharts::barycentric({ patch, inPatch });
-    if (std::min({ b[0], b[1], b[2] }) < -1e-9)
-      ++result.crossingVertices;
-  }
-  points = std::move(start);
+  result.distortionAfter = problem.plainEnergy(problem.x()) / isometric;
+  result.maximumDistortion = problem.largestDensity(problem.x()) / 4.0;
+  return {};
+}
+
+} // namespace
+
+Status checkGlobalMapOptions(const GlobalMapOptions& options)
+{
+  if (options.maximumIterations < 0)
+    return Status::error("global map: maximumIterations must be 0 or more (it is " +
+      std::to_string(options.maximumIterations) + ")");
+  if (!(options.leastRelativeGain >= 0.0) || !std::isfinite(options.leastRelativeGain))
+    return Status::error("global map: leastRelativeGain must be a finite number >= 0");
+  if (!(options.landmarkWeightRadius >= 0.0) || !std::isfinite(options.landmarkWeightRadius) ||
+    !(options.landmarkWeightCap > 0.0) || !std::isfinite(options.landmarkWeightCap))
+    return Status::error("global map: landmarkWeightRadius must be finite and >= 0, landmarkWeightCap finite and > 0");
+  return {};
+}
+
+Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& start,
+  PatchParameterization& result, const GlobalMapOptions& options, GlobalMapReport* report)
+{
+  if (Status s = checkGlobalMapOptions(options); !s.ok())
+    return s;
+  SeamlessProblem problem;
+  if (Status s = problem.build(net, domain, start, options); !s.ok())
+    return s;
+  GlobalMapReport figures;
+  if (Status s = optimize(problem, options, figures); !s.ok())
+    return s;
+  problem.places(start, result, figures.crossingVertices);
   if (report)
-    *report = result;
+    *report = figures;
   return {};
 }
 
 Status freeCurves(const StraightenedNet& straight, const BaseDomain& domain, const PatchParameterization& map,
-  const GlobalMapOptions& mapOptions, const PatchParameterizationOptions& options, StraightenedNet& out,
-  PatchParameterization& outMap, FreeCurvesReport* report)
+  const GlobalMapOptions& options, StraightenedNet& out, PatchParameterization& outMap, FreeCurvesReport* report)
 {
-  FreeCurvesReport result;
-  BaseCharts charts;
-  charts.build(domain);
-  std::vector<BasePoint> points;
-  if (Status s = optimizeGlobalMap(straight.net, domain, charts, map, points, mapOptions, &result.map); !s.ok())
+  if (Status s = checkGlobalMapOptions(options); !s.ok())
     return s;
+  FreeCurvesReport result;
+  SeamlessProblem problem;
+  if (Status s = problem.build(straight.net, domain, map, options); !s.ok())
+    return s;
+  if (Status s = optimize(problem, options, result.map); !s.ok())
+    return s;
+  PatchParameterization places;
+  problem.places(map, places, result.map.crossingVertices);
   StraightenedNet cut;
   PatchParameterization cutMap;
-  Status s = cutAlongMap(straight, domain, charts, points, cut, cutMap);
-  // The map's own places, the cut's rounding unflipped; where that fails,
-  // every patch parameterized anew on the new curves.
-  if (s.ok() && !unflipPatches(cut.net, domain, cutMap))
-    s = parameterizePatches(cut.net, domain, cutMap, options);
-  if (s.ok() && cutMap.flippedTriangles > 0)
-    s = Status::error(std::to_string(cutMap.flippedTriangles) + " triangles flip in the new patch maps");
+  const Status s = problem.cut(straight, cut, cutMap);
   result.applied = s.ok();
-  if (result.applied)
+  if (s.ok())
   {
     out = std::move(cut);
     outMap = std::move(cutMap);

@@ -16,53 +16,8 @@ namespace
 {
 
 constexpr double kTwoPi = 6.283185307179586;
-/// Cutting along a map, a curve crossing an edge this close to one of its
-/// ends goes through that end instead (which then moves onto the curve).
-constexpr double kMapSnap = 1e-3;
-/// Cutting along a map, within this distance (in base edge lengths) of a
-/// curve's end the walk reads each surface triangle in a chart of its own.
-constexpr double kEndRadius = 0.25;
-/// A vertex beside a cut curve may lie this far (in barycentric units) on
-/// its far side in the map (a crossing moved off an edge's end); it is put
-/// back on the curve's side, and the patch's map checked for flips.
-constexpr double kLargestOvershoot = 1e-3;
-/// How far towards its patch's centre a vertex splitting an edge between
-/// two curve points moves in the map, as a share of the way.
-constexpr double kRoomShift = 1e-3;
-/// Least barycentric coordinate of a vertex off the curves.
-constexpr double kOffCurve = 1e-9;
 /// Cuts closer than this fraction of an edge to its ends are moved away.
 constexpr double kSmallestCut = 1e-3;
-
-/// (1-t) a + t b, merged over the input vertices both points use. Both lie
-/// in one input triangle, so at most three vertices remain.
-SurfacePoint mix(const SurfacePoint& a, const SurfacePoint& b, double t)
-{
-  SurfacePoint result;
-  int used = 0;
-  const auto add = [&](int v, double w)
-  {
-    if (v < 0 || w == 0.0)
-      return;
-    for (int k = 0; k < used; ++k)
-      if (result.vertex[k] == v)
-      {
-        result.weight[k] += w;
-        return;
-      }
-    if (used < 3)
-    {
-      result.vertex[used] = v;
-      result.weight[used++] = w;
-    }
-  };
-  for (int k = 0; k < 3; ++k)
-  {
-    add(a.vertex[k], (1.0 - t) * a.weight[k]);
-    add(b.vertex[k], t * b.weight[k]);
-  }
-  return result;
-}
 
 /// True if every input vertex `inner` uses is used by `outer` too.
 bool supportedBy(const SurfacePoint& inner, const SurfacePoint& outer)
@@ -80,7 +35,6 @@ struct WalkEvent
   int vertex = -1;
   int u = -1, v = -1;
   double t = 0.0;
-  double along = 0.0; ///< Cutting along a map: the point's share of the way from the curve's start to its end.
 };
 
 class Straightener
@@ -153,230 +107,7 @@ public:
     return {};
   }
 
-  /// Cuts `in`'s surface anew along the preimages of L0's edges under the
-  /// map `points` (one per vertex of `in.net.mesh`), and gives every
-  /// vertex its place in its patch's base triangle.
-  /// With `endCharts`, the walk reads the triangles near each curve's end
-  /// in the end's star drawn for each alone (`chartOf()`).
-  Status recut(const StraightenedNet& in, const BaseCharts& charts, std::vector<BasePoint> points,
-    PatchParameterization& map, bool endCharts)
-  {
-    out_ = in;
-    charts_ = &charts;
-    points_ = std::move(points);
-    lenientAtVertices_ = true;
-    cuttingCurves_ = true;
-    EditableMesh& mesh = net_.mesh;
-    for (int h = 0; h < mesh.halfedgeCount(); ++h)
-      mesh.setTag(h, -1);
-    for (auto& curve : net_.curves)
-      curve.clear();
-    marks_.assign(mesh.vertexCount(), 0);
-    marked_.clear();
-    for (int v : net_.landmarkVertex)
-      mark(v);
-    const int edges = static_cast<int>(net_.baseEdges.size());
-    for (int e = 0; e < edges; ++e)
-    {
-      const int a = net_.baseEdges[e][0], b = net_.baseEdges[e][1];
-      const int left = net_.leftTriangle[e];
-      // The rhombus of the edge's two triangles, in the left one's frame.
-      const Triangle& lt = domain_.mesh.triangles[left];
-      // Beyond the left triangle's charts, through the right one's (an
-      // edge away, so laid the one way): the rhombus and all round it.
-      const int right = net_.rightTriangle[e];
-      const std::array<Vec2, 3>* rightCorners = charts.corners(left, right);
-      // Round either end, its whole star opened half a turn from the edge,
-      // so that triangles across the edge near its ends read as L0 has
-      // them (the left triangle's own charts open it elsewhere).
-      StarUnfolding aroundA, aroundB;
-      const bool starA = aroundA.build(domain_, left, a, b), starB = aroundB.build(domain_, left, b, a);
-      const auto touchesEnd = [&](const BasePoint& p) {
-        const Triangle& tri = domain_.mesh.triangles[p.triangle];
-        return (starA && std::find(tri.begin(), tri.end(), a) != tri.end()) ||
-          (starB && std::find(tri.begin(), tri.end(), b) != tri.end());
-      };
-      uv_.assign(mesh.vertexCount(), Vec2::Zero());
-      std::vector<char> charted(mesh.vertexCount(), 0);
-      for (int v = 0; v < mesh.vertexCount(); ++v)
-      {
-        Vec2 inRight;
-        if ((starA && aroundA.position(points_[v], uv_[v])) || (starB && aroundB.position(points_[v], uv_[v])))
-          charted[v] = 1;
-        // A point round either end that its star leaves out (more than
-        // half a turn from the edge, where a valence above 6 laps the star
-        // over itself) stays out: the left triangle's charts would lay it
-        // on another sheet, over the triangles the curve crosses, and the
-        // walk could take a triangle of that sheet.
-        else if (touchesEnd(points_[v]))
-          continue;
-        else if (charts.inFrame(left, points_[v], uv_[v]))
-          charted[v] = 1;
-        else if (rightCorners && charts.inFrame(right, points_[v], inRight))
-        {
-          const std::array<double, 3> c = BaseCharts::barycentric({ right, inRight });
-          uv_[v] = c[0] * (*rightCorners)[0] + c[1] * (*rightCorners)[1] + c[2] * (*rightCorners)[2];
-          charted[v] = 1;
-        }
-      }
-      region_.clear();
-      inRegion_.assign(mesh.triangleCount(), 0);
-      for (int t = 0; t < mesh.triangleCount(); ++t)
-      {
-        const Triangle& tri = mesh.triangle(t);
-        if (charted[tri[0]] && charted[tri[1]] && charted[tri[2]] &&
-          cross2(uv_[tri[1]] - uv_[tri[0]], uv_[tri[2]] - uv_[tri[0]]) > 0.0)
-        {
-          region_.push_back(t);
-          inRegion_[t] = 1;
-        }
-      }
-      std::vector<WalkEvent> events;
-      std::vector<int> curve;
-      const int from = net_.landmarkVertex[a], to = net_.landmarkVertex[b];
-      endStar_ = starB && endCharts ? &aroundB : nullptr;
-      const bool walked = walk(from, to, kMapSnap, events);
-      endStar_ = nullptr;
-      if (!walked)
-        return Status::error("cutting along the map: the preimage of L0's edge " + std::to_string(e) + " (landmarks " +
-          std::to_string(a) + " to " + std::to_string(b) + "): " + walkFailure_ + " after " +
-          std::to_string(events.size()) + " steps");
-      if (!cut(from, events, curve))
-        return Status::error("cutting along the map: the preimage of L0's edge " + std::to_string(e) +
-          " crosses an edge the cut removed");
-      // Curve points sit on the edge exactly, where the walk met them
-      // (curve point i is event i - 1).
-      const int ia = static_cast<int>(std::find(lt.begin(), lt.end(), a) - lt.begin());
-      const int ib = static_cast<int>(std::find(lt.begin(), lt.end(), b) - lt.begin());
-      for (std::size_t i = 1; i + 1 < curve.size(); ++i)
-      {
-        const int v = curve[i];
-        const double lambda = events[i - 1].along;
-        std::array<double, 3> c{ 0.0, 0.0, 0.0 };
-        c[ia] = 1.0 - lambda;
-        c[ib] = lambda;
-        points_[v] = BaseCharts::fromBarycentric(left, c);
-      }
-      for (int v : curve)
-        mark(v);
-      if (!setCurveTags(curve, e))
-        return Status::error("cutting along the map: the preimage of L0's edge " + std::to_string(e) +
-          " runs along another's");
-      net_.curves[e] = std::move(curve);
-    }
-    clearMarks();
-    lenientAtVertices_ = false;
-    cuttingCurves_ = false;
-    for (int bv = 0; bv < domain_.mesh.vertexCount(); ++bv)
-      if (!curvesLeaveInOrder(bv))
-        return Status::error("cutting along the map: the curves leave landmark " + std::to_string(bv) +
-          " out of L0's order");
-    if (Status s = labelPatches(net_); !s.ok())
-      return Status::error("cutting along the map: " + s.message());
-    makeRoomBetweenCurves();
-    if (Status s = rebuild(); !s.ok())
-      return s;
-    return mapOntoPatches(map);
-  }
-
 private:
-  /// The place of a vertex splitting an edge of patch triangle `triangle`
-  /// between two curve points: interpolated in that patch, then moved a
-  /// little towards its centre, off the curves the two ends may share
-  /// (which would leave the halves without area).
-  BasePoint roomPoint(int triangle, int a, int b, double t)
-  {
-    const int patch = net_.patchOfTriangle[triangle];
-    Vec2 pa, pb;
-    BasePoint result;
-    if (patch < 0 || !charts_->inFrame(patch, points_[a], pa) || !charts_->inFrame(patch, points_[b], pb))
-    {
-      mapFailed_ = true;
-      return points_[a];
-    }
-    const Vec2 centre = (BaseCharts::corner(0) + BaseCharts::corner(1) + BaseCharts::corner(2)) / 3.0;
-    Vec2 at = (1.0 - t) * pa + t * pb;
-    at += kRoomShift * (centre - at);
-    if (!charts_->locate(patch, at, result, 1e-9))
-      mapFailed_ = true;
-    return result;
-  }
-
-  /// Every vertex's place in the lowest-numbered patch holding it, and the
-  /// map's flips and crowding per patch.
-  Status mapOntoPatches(PatchParameterization& map)
-  {
-    if (mapFailed_)
-      return Status::error("cutting along the map: a new vertex fell outside the map's charts");
-    const EditableMesh& mesh = net_.mesh;
-    map = PatchParameterization{};
-    onCurve_.assign(mesh.vertexCount(), 0);
-    for (const auto& curve : net_.curves)
-      for (int v : curve)
-        onCurve_[v] = 1;
-    map.baseTriangle.assign(mesh.vertexCount(), -1);
-    map.baseCoordinates.assign(mesh.vertexCount(), { 0.0, 0.0, 0.0 });
-    for (int t = 0; t < mesh.triangleCount(); ++t)
-      for (int v : mesh.triangle(t))
-        if (map.baseTriangle[v] < 0 || net_.patchOfTriangle[t] < map.baseTriangle[v])
-          map.baseTriangle[v] = net_.patchOfTriangle[t];
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-    {
-      const int patch = map.baseTriangle[v];
-      Vec2 at;
-      if (patch < 0 || !charts_->inFrame(patch, points_[v], at))
-        return Status::error("cutting along the map: point " + std::to_string(v) + " is not in its patch's chart");
-      std::array<double, 3> c = BaseCharts::barycentric({ patch, at });
-      if (std::min({ c[0], c[1], c[2] }) < -kLargestOvershoot)
-        return Status::error("cutting along the map: point " + std::to_string(v) + " lies outside its patch");
-      // Off the curves, a point the cut left on a curve's far side is
-      // mirrored back across it (kept off it, so its triangles keep area).
-      const bool onCurve = onCurve_[v] != 0;
-      double sum = 0.0;
-      for (double& x : c)
-        sum += (x = onCurve ? (x < 1e-15 ? 0.0 : x) : std::max(std::abs(x), kOffCurve));
-      for (double& x : c)
-        x /= sum;
-      map.baseCoordinates[v] = c;
-    }
-    for (std::size_t b = 0; b < net_.landmarkVertex.size(); ++b)
-    {
-      const int v = net_.landmarkVertex[b];
-      const Triangle& tri = domain_.mesh.triangles[map.baseTriangle[v]];
-      map.baseCoordinates[v] = { 0.0, 0.0, 0.0 };
-      map.baseCoordinates[v][std::find(tri.begin(), tri.end(), static_cast<int>(b)) - tri.begin()] = 1.0;
-    }
-    map.smallestRelativeArea = 1.0;
-    std::vector<double> area(mesh.triangleCount()), surfaceArea(domain_.mesh.triangleCount(), 0.0);
-    for (int t = 0; t < mesh.triangleCount(); ++t)
-    {
-      const Triangle& tri = mesh.triangle(t);
-      area[t] = 0.5 * (mesh.point(tri[1]) - mesh.point(tri[0])).cross(mesh.point(tri[2]) - mesh.point(tri[0])).norm();
-      surfaceArea[net_.patchOfTriangle[t]] += area[t];
-    }
-    map.smallestAreaRatio = std::numeric_limits<double>::infinity();
-    for (int t = 0; t < mesh.triangleCount(); ++t)
-    {
-      const int patch = net_.patchOfTriangle[t];
-      std::array<Vec2, 3> c;
-      for (int k = 0; k < 3; ++k)
-      {
-        std::array<double, 3> coordinates;
-        const int v = mesh.triangle(t)[k];
-        if (!coordinatesInTriangle(domain_, map.baseTriangle[v], map.baseCoordinates[v], patch, coordinates))
-          return Status::error("cutting along the map: a corner of triangle " + std::to_string(t) + " is not in its patch");
-        c[k] = Vec2(coordinates[1], coordinates[2]);
-      }
-      const double share = cross2(c[1] - c[0], c[2] - c[0]);
-      map.smallestRelativeArea = std::min(map.smallestRelativeArea, share);
-      if (!(share > 0.0))
-        ++map.flippedTriangles;
-      if (surfaceArea[patch] > 0.0)
-        map.smallestAreaRatio = std::min(map.smallestAreaRatio, share * surfaceArea[patch] / std::max(area[t], 1e-300));
-    }
-    return {};
-  }
-
   // ---- One landmark: map its star to the plane, cut straight curves -------
 
   /// Replaces the curves around base vertex `center`; false (and nothing
@@ -533,7 +264,6 @@ private:
   {
     std::array<Vec2, 3> corners; ///< In the triangle's vertex order.
     Vec2 goal = Vec2::Zero();
-    bool ownStar = false; ///< Drawn in the end's star of its own (else in `uv_`).
     Vec2 at(const EditableMesh& mesh, int triangle, int vertex) const
     {
       const Triangle& tri = mesh.triangle(triangle);
@@ -542,63 +272,21 @@ private:
   };
 
   /// Triangle `triangle` in the walk's chart (`uv_`, its region only, the
-  /// goal at `goal`), except near the end of a curve being cut along a map:
-  /// there, where every corner lies in the end's star and one within
-  /// `kEndRadius` of it, in the end's star unfolded for this triangle alone,
-  /// opened in the widest gap between its corners' angles round the end.
-  /// The map spreads the triangles round a landmark all round its star,
-  /// whose seam one chart of every vertex (`uv_`) must put somewhere, and
-  /// some straddle it near the end; two unfoldings differ by a turn round
-  /// the end, so they agree on the way in to it. False if the triangle has
-  /// no chart.
+  /// goal at `goal`); false if the triangle is outside the region.
   bool chartOf(int triangle, const Vec2& goal, TriangleChart& chart) const
   {
-    const Triangle& tri = net_.mesh.triangle(triangle);
-    if (endStar_)
-    {
-      std::array<double, 3> radius{}, angle{};
-      bool round = true, near = false;
-      for (int k = 0; k < 3 && round; ++k)
-      {
-        round = endStar_->polar(points_[tri[k]], radius[k], angle[k]);
-        near = near || radius[k] < kEndRadius;
-      }
-      if (round && near)
-      {
-        // Corners at the end itself have no angle.
-        std::vector<double> around;
-        for (int k = 0; k < 3; ++k)
-          if (radius[k] > 0.0)
-            around.push_back(angle[k]);
-        std::sort(around.begin(), around.end());
-        const double turn = endStar_->turn();
-        double widest = around.empty() ? turn : around.front() + turn - around.back(), below = -1.0;
-        for (std::size_t i = 0; i + 1 < around.size(); ++i)
-          if (around[i + 1] - around[i] > widest)
-          {
-            widest = around[i + 1] - around[i];
-            below = around[i]; // corners up to here go a turn on, past the others
-          }
-        for (int k = 0; k < 3; ++k)
-          chart.corners[k] = endStar_->atPolar(radius[k], angle[k] <= below ? angle[k] + turn : angle[k]);
-        chart.goal = endStar_->atPolar(0.0, 0.0);
-        chart.ownStar = true;
-        if (cross2(chart.corners[1] - chart.corners[0], chart.corners[2] - chart.corners[0]) > 0.0)
-          return true;
-      }
-    }
     if (!inRegion_[triangle])
       return false;
+    const Triangle& tri = net_.mesh.triangle(triangle);
     chart.corners = { uv_[tri[0]], uv_[tri[1]], uv_[tri[2]] };
     chart.goal = goal;
-    chart.ownStar = false;
     return true;
   }
 
   /// Walks the straight segment from `source` to `target` in the planar map
   /// (each triangle as `chartOf()` draws it) and lists the vertices it
-  /// passes and the edges it crosses; false, saying why in `walkFailure_`,
-  /// if it leaves the map or meets another curve.
+  /// passes and the edges it crosses; false if it leaves the map or meets
+  /// another curve.
   bool walk(int source, int target, double snap, std::vector<WalkEvent>& events) const
   {
     const EditableMesh& mesh = net_.mesh;
@@ -606,21 +294,10 @@ private:
     int atVertex = source; // else: on halfedge `crossed` at `t`
     int crossed = -1;
     double t = 0.0;
-    // A point's share of the way along the edge, in the chart `chart` that
-    // placed it: its distance from the end in the end's own star (the point
-    // is on the way in), else its projection onto the edge in `uv_`.
-    const Vec2 start = uv_[source];
-    const auto along = [&](const TriangleChart& chart, const Vec2& at) {
-      if (chart.ownStar)
-        return std::clamp(1.0 - (at - chart.goal).norm() / (goal - start).norm(), 0.0, 1.0);
-      return std::clamp((at - start).dot(goal - start) / (goal - start).squaredNorm(), 0.0, 1.0);
-    };
     for (std::size_t step = 0; step <= region_.size() + 2; ++step)
     {
       int exit = -1;
       double exitT = 0.0;
-      TriangleChart used;
-      int exitTriangle = -1;
       if (atVertex >= 0)
       {
         if (atVertex == target)
@@ -632,12 +309,7 @@ private:
           const int triangle = EditableMesh::triangleOf(h);
           TriangleChart chart;
           if (!chartOf(triangle, goal, chart))
-          {
-            if (!lenientAtVertices_)
-              { walkFailure_ = "a triangle round a vertex is outside the chart"; return false; }
-            h = mesh.nextAroundVertex(h);
-            continue;
-          }
+            return false;
           const Vec2 p = chart.at(mesh, triangle, atVertex), d = chart.goal - p;
           const Vec2 y = chart.at(mesh, triangle, mesh.to(h));
           const Vec2 z = chart.at(mesh, triangle, mesh.to(EditableMesh::next(h)));
@@ -646,14 +318,12 @@ private:
           {
             exit = EditableMesh::next(h);
             exitT = cy / (cy + cz);
-            used = chart;
-            exitTriangle = triangle;
             break;
           }
           h = mesh.nextAroundVertex(h);
         } while (h != first);
         if (exit < 0)
-          { walkFailure_ = "no triangle round a vertex lies towards the end"; return false; }
+          return false;
       }
       else
       {
@@ -661,15 +331,13 @@ private:
         const int triangle = EditableMesh::triangleOf(entry);
         TriangleChart chart;
         if (!chartOf(triangle, goal, chart))
-          { walkFailure_ = "it enters a triangle outside the chart"; return false; }
-        exitTriangle = triangle;
+          return false;
         const int b = mesh.from(entry), a = mesh.to(entry), w = mesh.to(EditableMesh::next(entry));
         const Vec2 pa = chart.at(mesh, triangle, a), pb = chart.at(mesh, triangle, b), pw = chart.at(mesh, triangle, w);
         // `crossed` runs a -> b.
         const Vec2 p = (1.0 - t) * pa + t * pb;
         const Vec2 d = chart.goal - p;
         const double sa = cross2(d, pa - p), sb = cross2(d, pb - p), sw = cross2(d, pw - p);
-        used = chart;
         if ((sw > 0.0) == (sa > 0.0) && sw != 0.0)
         {
           exit = EditableMesh::prev(entry); // w -> b
@@ -689,9 +357,9 @@ private:
       else if ((exitT >= 1.0 - snap || exitT >= 1.0 || (v == target && exitT > 0.5)) && vFree)
         atVertex = v;
       else if (exitT <= 0.0 || exitT >= 1.0)
-        { walkFailure_ = "it runs through a vertex of another curve"; return false; }
+        return false;
       else if (mesh.tag(exit) >= 0)
-        { walkFailure_ = "it crosses another curve"; return false; }
+        return false;
       else
       {
         // Near a vertex it may not use, cross a little further away instead
@@ -699,18 +367,17 @@ private:
         atVertex = -1;
         crossed = exit;
         t = std::clamp(exitT, kSmallestCut, 1.0 - kSmallestCut);
-        const Vec2 at = (1.0 - t) * used.at(mesh, exitTriangle, u) + t * used.at(mesh, exitTriangle, v);
-        events.push_back({ -1, u, v, t, along(used, at) });
+        events.push_back({ -1, u, v, t });
         continue;
       }
       if (atVertex != target && std::any_of(events.begin(), events.end(),
                                   [&](const WalkEvent& e) { return e.vertex == atVertex; }))
-        { walkFailure_ = "it comes back to a vertex"; return false; }
+        return false;
       if (atVertex == source)
-        { walkFailure_ = "it comes back to its start"; return false; }
-      events.push_back({ atVertex, -1, -1, 0.0, along(used, used.at(mesh, exitTriangle, atVertex)) });
+        return false;
+      events.push_back({ atVertex, -1, -1, 0.0 });
     }
-    { walkFailure_ = "it does not reach its end"; return false; }
+    return false;
   }
 
   /// Applies a walk: splits the crossed edges and returns the curve.
@@ -740,13 +407,10 @@ private:
     const int a = mesh.from(h), b = mesh.to(h);
     const int t1 = EditableMesh::triangleOf(h), t2 = EditableMesh::triangleOf(mesh.opposite(h));
     const int m = mesh.splitEdge(h, t);
-    out_.inputPoint.push_back(mix(out_.inputPoint[a], out_.inputPoint[b], t));
+    out_.inputPoint.push_back(interpolate(out_.inputPoint[a], out_.inputPoint[b], t));
     uv_.resize(mesh.vertexCount());
     uv_[m] = (1.0 - t) * uv_[a] + t * uv_[b];
     marks_.resize(mesh.vertexCount(), 0);
-    if (charts_)
-      // A curve's new point is put on its base edge below, from uv_.
-      points_.push_back(cuttingCurves_ ? points_[a] : roomPoint(t1, a, b, t));
     for (int parent : { t1, t2 })
     {
       net_.patchOfTriangle.push_back(net_.patchOfTriangle[parent]);
@@ -950,7 +614,6 @@ private:
     std::vector<int> newIndex(mesh.vertexCount(), -1);
     TriangleMesh compact;
     std::vector<SurfacePoint> points;
-    std::vector<BasePoint> mapPoints;
     std::vector<int> patch, inputTriangle;
     for (int t = 0; t < mesh.triangleCount(); ++t)
     {
@@ -964,8 +627,6 @@ private:
           newIndex[v] = compact.vertexCount();
           compact.points.push_back(mesh.point(v));
           points.push_back(out_.inputPoint[v]);
-          if (charts_)
-            mapPoints.push_back(points_[v]);
         }
         v = newIndex[v];
       }
@@ -982,8 +643,6 @@ private:
       return Status::error("internal error after straightening: " + s.message());
     out_.inputPoint = std::move(points);
     out_.inputTriangle = std::move(inputTriangle);
-    if (charts_)
-      points_ = std::move(mapPoints);
     if (Status s = labelPatches(net_); !s.ok())
       return s;
     if (net_.patchOfTriangle != patch)
@@ -1003,16 +662,8 @@ private:
   std::vector<int> local_;
   std::vector<Vec2> uv_;           // planar map of the current star
   std::vector<char> marks_;        // vertices a new curve may not use
-  bool lenientAtVertices_ = false; // a walk passes over triangles outside the region round a vertex
-  mutable std::string walkFailure_; // why the last walk failed, for the cut's message
-  const StarUnfolding* endStar_ = nullptr; // while cutting along a map: the star the walk heads into
-  const BaseCharts* charts_ = nullptr; // while cutting along a map: its charts
-  std::vector<BasePoint> points_;  // and every vertex's place in it
   std::vector<int> marked_;
   std::vector<int> ring_;
-  bool mapFailed_ = false;
-  bool cuttingCurves_ = false;
-  std::vector<char> onCurve_;
 };
 
 } // namespace
@@ -1037,29 +688,32 @@ Status straightenNet(const TracedNet& traced, const BaseDomain& domain, Straight
   return straightener.run(traced);
 }
 
-Status cutAlongMap(const StraightenedNet& in, const BaseDomain& domain, const BaseCharts& charts,
-  const std::vector<BasePoint>& points, StraightenedNet& out, PatchParameterization& map)
+SurfacePoint interpolate(const SurfacePoint& a, const SurfacePoint& b, double t)
 {
-  if (points.size() != static_cast<std::size_t>(in.net.mesh.vertexCount()))
-    return Status::error("cutting along the map: the map does not belong to this net");
-  NetStraightenerOptions options;
-  NetStraightenerReport report;
-  // First in one chart per curve; where that fails (the map's triangles
-  // round a curve's end straddle its star's seam), again with the
-  // triangles near each end drawn each in its own.
-  Status first;
-  for (const bool endCharts : { false, true })
+  SurfacePoint result;
+  int used = 0;
+  const auto add = [&](int v, double w)
   {
-    out = StraightenedNet{};
-    map = PatchParameterization{};
-    Straightener straightener(domain, options, out, report);
-    const Status s = straightener.recut(in, charts, points, map, endCharts);
-    if (s.ok())
-      return s;
-    if (!endCharts)
-      first = s;
+    if (v < 0 || w == 0.0)
+      return;
+    for (int k = 0; k < used; ++k)
+      if (result.vertex[k] == v)
+      {
+        result.weight[k] += w;
+        return;
+      }
+    if (used < 3)
+    {
+      result.vertex[used] = v;
+      result.weight[used++] = w;
+    }
+  };
+  for (int k = 0; k < 3; ++k)
+  {
+    add(a.vertex[k], (1.0 - t) * a.weight[k]);
+    add(b.vertex[k], t * b.weight[k]);
   }
-  return first;
+  return result;
 }
 
 } // namespace cmp

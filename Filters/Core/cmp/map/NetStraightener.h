@@ -6,7 +6,6 @@
 
 #include <cmp/basedomain/BaseDomain.h>
 #include <cmp/layout/PatchLayout.h>
-#include <cmp/map/BaseCharts.h>
 #include <cmp/map/PatchParameterization.h>
 #include <cmp/mesh/Status.h>
 
@@ -37,6 +36,12 @@ struct SurfacePoint
   /// \brief Number of input vertices with a nonzero weight.
   int supportSize() const { return (vertex[0] >= 0) + (vertex[1] >= 0) + (vertex[2] >= 0); }
 };
+
+/// \brief The point at `t` from `a` to `b` (1 - t, t), its weights merged
+///        over the input vertices both use. Both must lie in one input
+///        triangle (on it, an edge or a vertex of it), so at most three
+///        vertices remain.
+SurfacePoint interpolate(const SurfacePoint& a, const SurfacePoint& b, double t);
 
 /// \brief Tuning of `straightenNet()`.
 struct NetStraightenerOptions
@@ -96,26 +101,5 @@ struct StraightenedNet
 /// split, so every patch can be parameterized bijectively.
 Status straightenNet(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out,
   const NetStraightenerOptions& options = {}, NetStraightenerReport* report = nullptr);
-
-/// \brief Cuts the surface of `in` anew along the preimages of L0's edges
-///        under a map of the whole surface onto L0 (`points`, one per vertex
-///        of `in.net.mesh`, as `optimizeGlobalMap()` gives them): each curve
-///        is the straight segment between its landmarks in the chart of its
-///        edge's two base triangles, walked across the surface's triangles
-///        and cut into it (as straightening cuts its lines), and `map` gives
-///        every vertex of the result its place in its patch's base triangle
-///        (the lowest-numbered one for a vertex on a curve). Where that
-///        fails, the cut is made again with every surface triangle near a
-///        curve's end drawn in the end's star on its own (the map spreads
-///        the triangles round a landmark all round its star, across the seam
-///        one chart must have). Beyond the paper (Documentation/algorithm.md,
-///        "The map").
-/// \pre `points` is bijective in `charts`, as `optimizeGlobalMap()` keeps it.
-///        Fails, naming the problem (the edge, its landmarks and why), where
-///        the map's curves would not make a layout equivalent to L0 (a curve
-///        that leaves its chart or runs along another, curves leaving a
-///        landmark out of order).
-Status cutAlongMap(const StraightenedNet& in, const BaseDomain& domain, const BaseCharts& charts,
-  const std::vector<BasePoint>& points, StraightenedNet& out, PatchParameterization& map);
 
 } // namespace cmp

@@ -18,9 +18,11 @@ Status checkStraightenOptions(const StraightenOptions& options)
     problem << "Tolerance must be a finite number >= 0 (it is " << net.tolerance << ")";
   else if (!(net.snapTolerance >= 0.0 && net.snapTolerance < 0.5))
     problem << "SnapTolerance must be at least 0 and below 0.5 (it is " << net.snapTolerance << ")";
-  else if (options.freeCurves && options.map.maximumSweeps < 0)
-    problem << "MapSweeps must be 0 or more (it is " << options.map.maximumSweeps << ")";
-  return problem.str().empty() ? Status{} : Status::error(problem.str());
+  else if (options.freeCurves && options.map.maximumIterations < 0)
+    problem << "MapIterations must be 0 or more (it is " << options.map.maximumIterations << ")";
+  if (!problem.str().empty())
+    return Status::error(problem.str());
+  return options.freeCurves ? checkGlobalMapOptions(options.map) : Status{};
 }
 
 Status straighten(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out, PatchParameterization& map,
@@ -41,6 +43,7 @@ Status straighten(const TracedNet& traced, const BaseDomain& domain, Straightene
   Clock::time_point part = Clock::now();
   Status status = straightenNet(traced, domain, straight, netOptions, &r.net);
   r.straightenSeconds = since(part);
+  r.straightenedNetLength = r.net.netLengthAfter;
   PatchParameterization parameterization;
   if (status.ok())
   {
@@ -53,7 +56,7 @@ Status straighten(const TracedNet& traced, const BaseDomain& domain, Straightene
     part = Clock::now();
     StraightenedNet moved;
     PatchParameterization movedMap;
-    status = freeCurves(straight, domain, parameterization, options.map, options.patches, moved, movedMap, &r.freeCurves);
+    status = freeCurves(straight, domain, parameterization, options.map, moved, movedMap, &r.freeCurves);
     if (status.ok())
     {
       straight = std::move(moved);

@@ -28,8 +28,8 @@ struct StraightenOptions
   /// \brief `straightenNet()`'s options (its `progress` is not used: see
   ///        `progress` below).
   NetStraightenerOptions net;
-  /// \brief `parameterizePatches()`'s options, also `freeCurves()`'s for a
-  ///        patch parameterized anew.
+  /// \brief `parameterizePatches()`'s options (the map's start with
+  ///        `freeCurves`).
   PatchParameterizationOptions patches;
   /// \brief Free the curves (`freeCurves()`): where that would not give a
   ///        layout equivalent to L0, the straightened net is kept and the
@@ -43,9 +43,9 @@ struct StraightenOptions
 
 /// \brief Checks the options `straighten()` checks first. The messages name
 ///        the options as the Net Straightener's properties do
-///        (`MaximumSweeps`, `Tolerance`, `SnapTolerance`, `MapSweeps`), so
-///        that a filter can pass them on as they are; `MapSweeps` only with
-///        `freeCurves`.
+///        (`MaximumSweeps`, `Tolerance`, `SnapTolerance`, `MapIterations`), so
+///        that a filter can pass them on as they are; the map's options only
+///        with `freeCurves` (`checkGlobalMapOptions()`).
 Status checkStraightenOptions(const StraightenOptions& options);
 
 /// \brief What `straighten()` did.
@@ -54,6 +54,10 @@ struct StraightenReport
   /// \brief `straightenNet()`'s report; with the curves freed,
   ///        `netLengthAfter` and `areaVariationAfter` are the freed net's.
   NetStraightenerReport net;
+  /// \brief The straightened net's length, before the curves were freed
+  ///        (`straightenNet()`'s `netLengthAfter`): the freed curves follow
+  ///        the map, not shortest paths, and are longer.
+  double straightenedNetLength = 0.0;
   /// \brief `freeCurves()`'s report (untouched without `freeCurves`).
   FreeCurvesReport freeCurves;
   double straightenSeconds = 0.0;   ///< `straightenNet()` alone.
