@@ -10,11 +10,13 @@
 ///
 ///   cmp_map_study --data DIR [--l0 MODEL|FILE.obj] [--level 5]
 ///                 [--relax 4] [--models 381,382,...] [--fixed-curves]
-///                 [--sweeps N] [--no-repair] [--details] [--write DIR]
+///                 [--sweeps N] [--map-iterations N] [--map-gain G]
+///                 [--no-repair] [--details] [--write DIR]
 ///
 /// One line per model, then the largest and median distance and the summed
 /// folds: the table the map issue's notes give. `--sweeps` sets the
-/// straightening sweeps, `--no-repair` counts the folds before any repair,
+/// straightening sweeps, `--map-iterations` and `--map-gain` the map's
+/// Newton steps at most and the least relative gain of one, `--no-repair` counts the folds before any repair,
 /// `--details` prints L0's valences and the folds left near each landmark,
 /// `--write` each remesh as DIR/NAME.remesh.off with its folded triangles
 /// (NAME.folds.txt: corner and centroid criterion per triangle) and where
@@ -143,6 +145,8 @@ int main(int argc, char** argv)
   bool repair = true;
   bool details = false;
   int sweeps = -1;
+  int mapIterations = -1;
+  double mapGain = -1.0;
   std::string writeDir;
   std::vector<std::string> names{ "381", "382", "383", "384", "385", "387", "388", "389", "391", "392", "spot" };
   for (int i = 1; i < argc; ++i)
@@ -174,12 +178,17 @@ int main(int argc, char** argv)
       repair = false;
     else if (arg == "--details")
       details = true;
+    else if (arg == "--map-iterations")
+      mapIterations = std::stoi(value());
+    else if (arg == "--map-gain")
+      mapGain = std::stod(value());
     else if (arg == "--fixed-curves")
       fixedCurves = true;
     else
     {
       std::cerr << "usage: cmp_map_study --data DIR [--l0 MODEL|FILE.obj] [--level 5] [--relax 4] "
-                   "[--models A,B,...] [--fixed-curves] [--sweeps N] [--no-repair] [--details] [--write DIR]\n";
+                   "[--models A,B,...] [--fixed-curves] [--sweeps N] [--map-iterations N] [--map-gain G] "
+                   "[--no-repair] [--details] [--write DIR]\n";
       return 2;
     }
   }
@@ -249,6 +258,10 @@ int main(int argc, char** argv)
   options.freeCurves = !fixedCurves;
   if (sweeps >= 0)
     options.net.maxSweeps = sweeps;
+  if (mapIterations >= 0)
+    options.map.maximumIterations = mapIterations;
+  if (mapGain >= 0.0)
+    options.map.leastRelativeGain = mapGain;
   std::vector<cmp::RemeshModel> remeshModels;
   std::vector<Model*> placed;
   for (auto& model : models)
@@ -266,9 +279,12 @@ int main(int argc, char** argv)
       std::cerr << model->name << ": " << s.message() << "\n";
       continue;
     }
-    std::fprintf(stderr, "%s: trace %.2f s, straighten %.2f s, map %.2f s, applied %d %s\n", model->name.c_str(),
-      model->traceSeconds, model->report.straightenSeconds + model->report.parameterizeSeconds,
-      model->report.mapSeconds, model->report.freeCurves.applied ? 1 : 0, model->report.freeCurves.reason.c_str());
+    std::fprintf(stderr, "%s: %d vertices, traced %d, mapped on %d; trace %.2f s, straighten %.2f s, map %.2f s, applied %d %s, flipped %d\n",
+      model->name.c_str(), model->file.mesh.vertexCount(), model->traced.mesh.vertexCount(),
+      model->straight.net.mesh.vertexCount(), model->traceSeconds,
+      model->report.straightenSeconds + model->report.parameterizeSeconds,
+      model->report.mapSeconds, model->report.freeCurves.applied ? 1 : 0, model->report.freeCurves.reason.c_str(),
+      model->map.flippedTriangles);
     remeshModels.push_back({ &model->file.mesh, &model->surface });
     placed.push_back(model.get());
   }

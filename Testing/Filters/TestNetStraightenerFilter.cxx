@@ -71,9 +71,10 @@ void expectStraightened(vtkCMPNetStraightener* straightener, vtkPolyData* origin
   vtkPolyData* l0, const std::string& what)
 {
   // Straightening shortens the traced net up to 2%; free curves follow the
-  // map, not the shortest paths: within the 5% the layout may exceed its
-  // optimum.
-  const double lengthSlack = straightener->GetFreeCurves() ? 1.05 : 1.02;
+  // map, not the shortest paths (measured up to 7.5% longer than traced on
+  // the 11 SHREC'07 and Spot models); the straightened net they start from
+  // is reported too.
+  const double lengthSlack = straightener->GetFreeCurves() ? 1.10 : 1.02;
   vtkPolyData* surface = straightener->GetOutput(0);
   vtkPolyData* curves = straightener->GetOutput(1);
   const int baseVertices = static_cast<int>(l0->GetNumberOfPoints());
@@ -85,6 +86,7 @@ void expectStraightened(vtkCMPNetStraightener* straightener, vtkPolyData* origin
   EXPECT_EQ(fieldValue(curves, "NetValid"), 1.0) << what;
   EXPECT_GE(fieldValue(surface, "Sweeps"), 1.0) << what;
   EXPECT_LE(fieldValue(surface, "NetLengthAfter"), lengthSlack * fieldValue(surface, "NetLengthBefore")) << what;
+  EXPECT_LE(fieldValue(surface, "StraightenedNetLength"), 1.02 * fieldValue(surface, "NetLengthBefore")) << what;
   EXPECT_NEAR(fieldValue(surface, "NetLengthPerSqrtAreaAfter"),
     fieldValue(surface, "NetLengthAfter") / std::sqrt(areaOf(original)), 1e-9)
     << what;

@@ -7,6 +7,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -364,6 +365,10 @@ public:
     if (!(totalArea_ > 0.0))
       return Status::error("global map: the surface has no area");
     side_ = std::sqrt(4.0 * totalArea_ / (std::sqrt(3.0) * baseTriangles));
+    baseTriangles_ = baseTriangles;
+    if (options.curvatureDensity > 0.0)
+      inflateCurvedParts(options.curvatureDensity, options.curvatureDensityCap);
+
     if (Status s = geometry_.build(domain, side_); !s.ok())
       return s;
 
@@ -575,6 +580,57 @@ public:
   }
 
   double side() const { return side_; }
+
+  /// Curved parts sampled finer: each triangle's metric is inflated by s,
+  /// s^2 = min(cap, 1 + c (kappa l)^2), kappa the largest turn of the
+  /// vertex normals along its sides per length (sides shorter than l / 4
+  /// count as l / 4) and l the side of a level-5 remesh triangle. The
+  /// energy then gives a curved part (a tail's tip, an ear's rim) the
+  /// parameter area of a larger flat one, so uniform remesh samples reach
+  /// into it. The base triangles keep 1/F of the inflated area each.
+  void inflateCurvedParts(double c, double cap)
+  {
+    const EditableMesh& mesh = *mesh_;
+    const double l = side_ / 32.0;
+    std::vector<Vec3> normal(mesh.vertexCount(), Vec3::Zero());
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      if (mesh.isRemoved(t))
+        continue;
+      const Triangle& tri = mesh.triangle(t);
+      const Vec3 face = (mesh.point(tri[1]) - mesh.point(tri[0])).cross(mesh.point(tri[2]) - mesh.point(tri[0]));
+      if (!(face.norm() > 0.0))
+        continue;
+      for (int k = 0; k < 3; ++k)
+      {
+        const Vec3 a = mesh.point(tri[(k + 1) % 3]) - mesh.point(tri[k]);
+        const Vec3 b = mesh.point(tri[(k + 2) % 3]) - mesh.point(tri[k]);
+        normal[tri[k]] += std::atan2(a.cross(b).norm(), a.dot(b)) * face.normalized();
+      }
+    }
+    for (Vec3& v : normal)
+      if (v.norm() > 0.0)
+        v.normalize();
+    totalArea_ = 0.0;
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      if (mesh.isRemoved(t) || !(area_[t] > 0.0))
+        continue;
+      const Triangle& tri = mesh.triangle(t);
+      double kappa = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = tri[k], b = tri[(k + 1) % 3];
+        const double turn = std::acos(std::clamp(normal[a].dot(normal[b]), -1.0, 1.0));
+        kappa = std::max(kappa, turn / std::max((mesh.point(a) - mesh.point(b)).norm(), 0.25 * l));
+      }
+      const double inflation = std::min(cap, 1.0 + c * kappa * kappa * l * l);
+      area_[t] *= inflation;
+      inverseEdges_[t] /= std::sqrt(inflation);
+      totalArea_ += area_[t];
+    }
+    side_ = std::sqrt(4.0 * totalArea_ / (std::sqrt(3.0) * baseTriangles_));
+  }
 
   /// The base edge between base vertices `a` and `b`, -1 if none.
   int baseEdge(int a, int b) const
@@ -1331,6 +1387,7 @@ private:
   std::unordered_map<long long, int> edgeOf_; ///< Base edge of a sorted pair of base vertices.
   DomainGeometry geometry_;
   double side_ = 1.0;
+  int baseTriangles_ = 0;
   double totalArea_ = 0.0;
   std::vector<double> area_;
   std::vector<double> weight_;        ///< Per triangle: its energy's factor (area x landmark weight).
@@ -1422,6 +1479,9 @@ Status checkGlobalMapOptions(const GlobalMapOptions& options)
       std::to_string(options.maximumIterations) + ")");
   if (!(options.leastRelativeGain >= 0.0) || !std::isfinite(options.leastRelativeGain))
     return Status::error("global map: leastRelativeGain must be a finite number >= 0");
+  if (!(options.curvatureDensity >= 0.0) || !std::isfinite(options.curvatureDensity) ||
+    !(options.curvatureDensityCap >= 1.0) || !std::isfinite(options.curvatureDensityCap))
+    return Status::error("global map: curvatureDensity must be finite and >= 0, curvatureDensityCap finite and >= 1");
   if (!(options.landmarkWeightRadius >= 0.0) || !std::isfinite(options.landmarkWeightRadius) ||
     !(options.landmarkWeightCap > 0.0) || !std::isfinite(options.landmarkWeightCap))
     return Status::error("global map: landmarkWeightRadius must be finite and >= 0, landmarkWeightCap finite and > 0");

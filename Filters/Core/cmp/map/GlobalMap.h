@@ -29,7 +29,7 @@ struct GlobalMapOptions
   int maximumIterations = 100;
   /// \brief A step that lowers the energy by less than this fraction ends
   ///        the optimization.
-  double leastRelativeGain = 1e-5;
+  double leastRelativeGain = 1e-4;
   /// \brief Near the landmarks the map is asked to be closer to isometric:
   ///        each triangle's energy is multiplied by 1 + min(cap, (R / r)^2),
   ///        r the distance of its centroid from the nearest landmark and R
@@ -43,6 +43,16 @@ struct GlobalMapOptions
   ///        at a landmark would weigh so much that a protrusion beside the
   ///        landmark is denied room.
   double landmarkWeightCap = 16.0;
+  /// \brief Curved parts get more of L0: each surface triangle's metric is
+  ///        inflated by s, s^2 = min(cap, 1 + c (kappa l)^2), c this value,
+  ///        kappa the largest turn of the vertex normals along its sides per
+  ///        length and l the side of a level-5 remesh triangle (0: the
+  ///        surface as it is). Uniform remesh samples then reach into tips
+  ///        of tails, ears and hooves, whose few flat-measured square
+  ///        millimetres a low-distortion map would give little room.
+  double curvatureDensity = 1.0;
+  /// \brief The largest inflation s^2 above.
+  double curvatureDensityCap = 16.0;
 };
 
 /// \brief Checks `options`; the messages name the fields.
@@ -52,16 +62,17 @@ Status checkGlobalMapOptions(const GlobalMapOptions& options);
 struct GlobalMapReport
 {
   int iterations = 0;             ///< Newton steps made.
-  double distortionBefore = 0.0;  ///< Area-weighted mean symmetric Dirichlet energy over its isometric value (1 best), before.
+  double distortionBefore = 0.0;  ///< Area-weighted mean symmetric Dirichlet energy over its isometric value (1 best), before (against the inflated surface).
   double distortionAfter = 0.0;   ///< The same after.
   double maximumDistortion = 0.0; ///< The largest per-triangle value after.
   int crossingVertices = 0;       ///< Vertices that left their patch's base triangle.
 };
 
 /// \brief Lowers the symmetric Dirichlet energy of the map `start` (per-patch
-///        maps, as `parameterizePatches()` gives them) of `net`'s surface
-///        onto `domain`, each base triangle drawn equilateral with 1/F of the
-///        surface's area; `result` gets every vertex's new place (a base
+///        maps, as `parameterizePatches()` gives them) of `net`'s surface,
+///        its curved parts inflated (`curvatureDensity`), onto `domain`,
+///        each base triangle drawn equilateral with 1/F of the surface's
+///        (inflated) area; `result` gets every vertex's new place (a base
 ///        triangle holding it and its barycentric coordinates there; a
 ///        vertex's triangle need no longer be its patch).
 ///
