@@ -126,8 +126,9 @@ public:
   ///        such triangles are slid along the surface (with their
   ///        neighbours, then alone), never more than two median edges (half of
   ///        one where that suffices), until their triangles agree with the
-  ///        surface or no short move helps.
-  ///        Landmarks never move. A moved
+  ///        surface or no short move helps; then the corners of triangles
+  ///        flipped by the centroid criterion (`CentroidFlips`) try short
+  ///        moves that fold nothing more. Landmarks never move. A moved
   ///        vertex is no longer exactly at its `BaseCoordinates` on that
   ///        model; turn off to keep every vertex exactly there.
   vtkSetMacro(RepairFolds, bool);

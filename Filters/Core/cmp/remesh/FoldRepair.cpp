@@ -269,6 +269,21 @@ public:
     return folded;
   }
 
+  /// Whether triangle `t` faces against the surface triangle nearest to
+  /// its centroid (the centroid criterion, `centroidFlippedTriangles()`).
+  bool centroidFlipped(int t, const ClosestPointQuery& query, const TriangleMesh& flat) const
+  {
+    const Triangle& tri = remesh_.triangles[t];
+    const Vec3 centroid = (positions_[tri[0]] + positions_[tri[1]] + positions_[tri[2]]) / 3.0;
+    const ClosestPointQuery::Result nearest = query.closest(centroid);
+    if (nearest.triangle < 0)
+      return false;
+    const Triangle& under = flat.triangles[nearest.triangle];
+    const Vec3 own = (positions_[tri[1]] - positions_[tri[0]]).cross(positions_[tri[2]] - positions_[tri[0]]);
+    const Vec3 there = (flat.points[under[1]] - flat.points[under[0]]).cross(flat.points[under[2]] - flat.points[under[0]]);
+    return own.dot(there) < 0.0;
+  }
+
 private:
   /// The surface normal under triangle `t`: the sum of its corners'.
   Vec3 under(int t) const
@@ -313,6 +328,65 @@ bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
         continue;
       const VertexScore score = mesh.aroundVertex(v);
       if (score.folds <= current.folds && score.betterThan(bestScore))
+        bestScore = score, best = tried, moved = true;
+    }
+  mesh.moveTo(v, best);
+  return moved;
+}
+
+/// What moving one vertex does to the centroid criterion around it, the
+/// folds and shapes as in `VertexScore`.
+struct FlipScore
+{
+  VertexScore shape;
+  int flips = 0; ///< Triangles flipped by the centroid criterion.
+
+  bool betterThan(const FlipScore& other) const
+  {
+    return shape.folds < other.shape.folds ||
+      (shape.folds == other.shape.folds &&
+        (flips < other.flips || (flips == other.flips && shape.betterThan(other.shape))));
+  }
+};
+
+FlipScore flipScore(const FoldedRemesh& mesh, int v, const ClosestPointQuery& query, const TriangleMesh& flat)
+{
+  FlipScore score;
+  score.shape = mesh.aroundVertex(v);
+  for (int t : mesh.trianglesOf(v))
+    score.flips += mesh.centroidFlipped(t, query, flat) ? 1 : 0;
+  return score;
+}
+
+/// Tries short moves of `v`, a corner of a triangle flipped by the centroid
+/// criterion, and keeps the best one that folds no more triangles and
+/// flips fewer round it; returns whether it moved.
+bool unflipVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const Vec3& origin, double reach,
+  const ClosestPointQuery& query, const TriangleMesh& flat)
+{
+  const FlipScore current = flipScore(mesh, v, query, flat);
+  if (current.flips == 0)
+    return false;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (int w : mesh.neighbours(v))
+    shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
+  const Vec3 normal = mesh.normal(v);
+  const Vec3 first = normal.unitOrthogonal(), second = normal.cross(first);
+  const TrianglePoint start = mesh.point(v);
+  TrianglePoint best = start;
+  FlipScore bestScore = current;
+  bool moved = false;
+  for (double fraction : kStepFractions)
+    for (int k = 0; k < kDirections; ++k)
+    {
+      const double angle = 2.0 * kPi * k / kDirections;
+      const TrianglePoint tried =
+        walkOnSurface(surface, start, fraction * shortest * (std::cos(angle) * first + std::sin(angle) * second));
+      mesh.moveTo(v, tried);
+      if ((mesh.position(v) - origin).norm() > reach)
+        continue;
+      const FlipScore score = flipScore(mesh, v, query, flat);
+      if (score.shape.folds <= current.shape.folds && score.flips < current.flips && score.betterThan(bestScore))
         bestScore = score, best = tried, moved = true;
     }
   mesh.moveTo(v, best);
@@ -688,15 +762,15 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       std::to_string(kMostRegionWidening) + ", not " + std::to_string(options.regionWidening));
   FoldRepairReport result;
   result.foldedBefore = result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
+  FoldedRemesh mesh(remesh, surface, samples);
+  std::vector<Vec3> origin;
+  std::vector<TrianglePoint> placed;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    origin.push_back(mesh.position(v)), placed.push_back(mesh.point(v));
+  const double typicalEdge = kTypicalEdgeShare * medianEdgeLength(mesh);
+  const std::vector<double> reach = singleMoveReach(mesh, options.reach, typicalEdge);
   if (result.foldedBefore > 0)
   {
-    FoldedRemesh mesh(remesh, surface, samples);
-    std::vector<Vec3> origin;
-    std::vector<TrianglePoint> placed;
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-      origin.push_back(mesh.position(v)), placed.push_back(mesh.point(v));
-    const double typicalEdge = kTypicalEdgeShare * medianEdgeLength(mesh);
-    const std::vector<double> reach = singleMoveReach(mesh, options.reach, typicalEdge);
     // Regions first: single moves made first settle into a state where a
     // fan of needles is locked (each vertex's best move folds a neighbour)
     // and the regions' descent then often stalls there; after the regions,
@@ -712,9 +786,44 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
       if (!any)
         break;
     }
-    writeBack(surface, mesh, placed, origin, samples, result);
-    result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   }
+  if (options.centroidFlips)
+  {
+    // Then the centroid criterion: a triangle whose corners lie on one side
+    // of a thin part while its middle hangs over the other, by single moves
+    // that fold nothing more.
+    const TriangleMesh flat = surface.toTriangleMesh();
+    const ClosestPointQuery query(flat);
+    std::vector<int> flips, vertices;
+    // The flipped triangles' movable corners, those in most flips first.
+    const auto collect = [&]() {
+      flips.assign(mesh.vertexCount(), 0);
+      vertices.clear();
+      int count = 0;
+      for (int t = 0; t < mesh.triangleCount(); ++t)
+        if (mesh.centroidFlipped(t, query, flat))
+        {
+          ++count;
+          for (int v : mesh.triangle(t))
+            if (!mesh.pinned(v) && flips[v]++ == 0)
+              vertices.push_back(v);
+        }
+      std::stable_sort(vertices.begin(), vertices.end(), [&](int a, int b) { return flips[a] > flips[b]; });
+      return count;
+    };
+    result.centroidFlipsBefore = result.centroidFlipsAfter = collect();
+    for (int sweep = 0; sweep < options.maximumSweeps && result.centroidFlipsAfter > 0; ++sweep)
+    {
+      bool any = false;
+      for (int v : vertices)
+        any = unflipVertex(surface, mesh, v, origin[v], reach[v], query, flat) || any;
+      result.centroidFlipsAfter = collect();
+      if (!any)
+        break;
+    }
+  }
+  writeBack(surface, mesh, placed, origin, samples, result);
+  result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   if (report)
     *report = result;
   return {};

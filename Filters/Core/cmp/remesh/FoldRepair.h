@@ -36,6 +36,12 @@ struct FoldRepairOptions
   ///        edges by default). 1 to 64; 1: regions never go beyond the
   ///        first reach.
   int regionWidening = 4;
+  /// \brief Then move single vertices of triangles flipped by the centroid
+  ///        criterion (`centroidFlippedTriangles()`: the surface nearest to
+  ///        the triangle's middle faces the other way, at the rim of an ear
+  ///        or across a tail), never folding more by the corner criterion,
+  ///        within the same reach.
+  bool centroidFlips = true;
 };
 
 /// \brief What `repairFolds()` did.
@@ -44,6 +50,8 @@ struct FoldRepairReport
   int foldedBefore = 0;  ///< Triangles against the surface before.
   int foldedAfter = 0;   ///< Triangles against the surface after.
   int movedVertices = 0; ///< Vertices that left their parameterized place.
+  int centroidFlipsBefore = 0; ///< Triangles flipped by the centroid criterion before its pass (after the folds').
+  int centroidFlipsAfter = 0;  ///< The same after.
   double largestMove = 0.0; ///< Longest straight-line move of a vertex.
 };
 
