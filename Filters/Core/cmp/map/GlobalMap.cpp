@@ -1326,13 +1326,13 @@ public:
   }
 
 private:
-  void buildPattern()
+  /// Calls `visit(t, slot, row, col)` for every entry on or below the
+  /// Hessian's diagonal that a triangle couples, `slot` its place among the
+  /// triangle's 36 (corner a, corner b, coordinate i, coordinate j).
+  template <class Visit>
+  void forEachEntry(const Visit& visit) const
   {
     const EditableMesh& mesh = *mesh_;
-    std::vector<Eigen::Triplet<double>> entries;
-    const auto keep = [](int row, int col) { return row >= col; };
-    for (int i = 0; i < 2 * variables_; ++i)
-      entries.emplace_back(i, i, 0.0);
     for (int t = 0; t < mesh.triangleCount(); ++t)
     {
       if (mesh.isRemoved(t) || !(area_[t] > 0.0))
@@ -1345,10 +1345,19 @@ private:
             continue;
           for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j)
-              if (keep(2 * va + i, 2 * vb + j))
-                entries.emplace_back(2 * va + i, 2 * vb + j, 0.0);
+              if (2 * va + i >= 2 * vb + j)
+                visit(t, 12 * a + 4 * b + 2 * i + j, 2 * va + i, 2 * vb + j);
         }
     }
+  }
+
+  void buildPattern()
+  {
+    const EditableMesh& mesh = *mesh_;
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < 2 * variables_; ++i)
+      entries.emplace_back(i, i, 0.0);
+    forEachEntry([&](int, int, int row, int col) { entries.emplace_back(row, col, 0.0); });
     hessian_.resize(2 * variables_, 2 * variables_);
     hessian_.setFromTriplets(entries.begin(), entries.end());
     hessian_.makeCompressed();
@@ -1362,22 +1371,7 @@ private:
     for (int i = 0; i < 2 * variables_; ++i)
       diagonal_[i] = slotOf(i, i);
     slots_.assign(36 * static_cast<std::size_t>(mesh.triangleCount()), -1);
-    for (int t = 0; t < mesh.triangleCount(); ++t)
-    {
-      if (mesh.isRemoved(t) || !(area_[t] > 0.0))
-        continue;
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-        {
-          const int va = variable_[mesh.triangle(t)[a]], vb = variable_[mesh.triangle(t)[b]];
-          if (va < 0 || vb < 0)
-            continue;
-          for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j)
-              if (keep(2 * va + i, 2 * vb + j))
-                slots_[36 * t + 12 * a + 4 * b + 2 * i + j] = slotOf(2 * va + i, 2 * vb + j);
-        }
-    }
+    forEachEntry([&](int t, int slot, int row, int col) { slots_[36 * t + slot] = slotOf(row, col); });
   }
 
   const EditableMesh* mesh_ = nullptr;
@@ -1488,16 +1482,28 @@ Status checkGlobalMapOptions(const GlobalMapOptions& options)
   return {};
 }
 
-Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& start,
-  PatchParameterization& result, const GlobalMapOptions& options, GlobalMapReport* report)
+namespace
+{
+
+/// The map of `net`'s surface from `start` optimized in `problem`.
+Status solve(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& start,
+  const GlobalMapOptions& options, SeamlessProblem& problem, GlobalMapReport& report)
 {
   if (Status s = checkGlobalMapOptions(options); !s.ok())
     return s;
-  SeamlessProblem problem;
   if (Status s = problem.build(net, domain, start, options); !s.ok())
     return s;
+  return optimize(problem, options, report);
+}
+
+} // namespace
+
+Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& start,
+  PatchParameterization& result, const GlobalMapOptions& options, GlobalMapReport* report)
+{
+  SeamlessProblem problem;
   GlobalMapReport figures;
-  if (Status s = optimize(problem, options, figures); !s.ok())
+  if (Status s = solve(net, domain, start, options, problem, figures); !s.ok())
     return s;
   problem.places(start, result, figures.crossingVertices);
   if (report)
@@ -1508,13 +1514,9 @@ Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const P
 Status freeCurves(const StraightenedNet& straight, const BaseDomain& domain, const PatchParameterization& map,
   const GlobalMapOptions& options, StraightenedNet& out, PatchParameterization& outMap, FreeCurvesReport* report)
 {
-  if (Status s = checkGlobalMapOptions(options); !s.ok())
-    return s;
   FreeCurvesReport result;
   SeamlessProblem problem;
-  if (Status s = problem.build(straight.net, domain, map, options); !s.ok())
-    return s;
-  if (Status s = optimize(problem, options, result.map); !s.ok())
+  if (Status s = solve(straight.net, domain, map, options, problem, result.map); !s.ok())
     return s;
   PatchParameterization places;
   problem.places(map, places, result.map.crossingVertices);

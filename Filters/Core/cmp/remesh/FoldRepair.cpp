@@ -301,13 +301,15 @@ private:
   std::vector<std::vector<int>> neighbours_;
 };
 
-/// Tries short moves of `v` around its current place and keeps the best
-/// one that folds no more triangles around it; returns whether it moved.
-bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const Vec3& origin, double reach)
+/// Tries short moves of `v` around its current place (16 directions of its
+/// tangent plane, walked on the surface, within `reach` of `origin`) and
+/// keeps the best-scored one that `keeps` accepts against the score where
+/// it stands (`Score` has `betterThan()`); returns whether it moved.
+template <class ScoreOf, class Keeps>
+bool tryShortMoves(const EditableMesh& surface, FoldedRemesh& mesh, int v, const Vec3& origin, double reach,
+  const ScoreOf& scoreOf, const Keeps& keeps)
 {
-  const VertexScore current = mesh.aroundVertex(v);
-  if (current.folds == 0)
-    return false;
+  const auto current = scoreOf(v);
   double shortest = std::numeric_limits<double>::infinity();
   for (int w : mesh.neighbours(v))
     shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
@@ -315,7 +317,7 @@ bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
   const Vec3 first = normal.unitOrthogonal(), second = normal.cross(first);
   const TrianglePoint start = mesh.point(v);
   TrianglePoint best = start;
-  VertexScore bestScore = current;
+  auto bestScore = current;
   bool moved = false;
   for (double fraction : kStepFractions)
     for (int k = 0; k < kDirections; ++k)
@@ -326,12 +328,22 @@ bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
       mesh.moveTo(v, tried);
       if ((mesh.position(v) - origin).norm() > reach)
         continue;
-      const VertexScore score = mesh.aroundVertex(v);
-      if (score.folds <= current.folds && score.betterThan(bestScore))
+      const auto score = scoreOf(v);
+      if (keeps(score, current) && score.betterThan(bestScore))
         bestScore = score, best = tried, moved = true;
     }
   mesh.moveTo(v, best);
   return moved;
+}
+
+/// Tries short moves of `v` around its current place and keeps the best
+/// one that folds no more triangles around it; returns whether it moved.
+bool improveVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const Vec3& origin, double reach)
+{
+  if (mesh.aroundVertex(v).folds == 0)
+    return false;
+  return tryShortMoves(surface, mesh, v, origin, reach, [&](int w) { return mesh.aroundVertex(w); },
+    [](const VertexScore& score, const VertexScore& current) { return score.folds <= current.folds; });
 }
 
 /// What moving one vertex does to the centroid criterion around it, the
@@ -349,48 +361,24 @@ struct FlipScore
   }
 };
 
-FlipScore flipScore(const FoldedRemesh& mesh, int v, const ClosestPointQuery& query, const TriangleMesh& flat)
-{
-  FlipScore score;
-  score.shape = mesh.aroundVertex(v);
-  for (int t : mesh.trianglesOf(v))
-    score.flips += mesh.centroidFlipped(t, query, flat) ? 1 : 0;
-  return score;
-}
-
 /// Tries short moves of `v`, a corner of a triangle flipped by the centroid
 /// criterion, and keeps the best one that folds no more triangles and
 /// flips fewer round it; returns whether it moved.
 bool unflipVertex(const EditableMesh& surface, FoldedRemesh& mesh, int v, const Vec3& origin, double reach,
   const ClosestPointQuery& query, const TriangleMesh& flat)
 {
-  const FlipScore current = flipScore(mesh, v, query, flat);
-  if (current.flips == 0)
+  const auto scoreOf = [&](int w) {
+    FlipScore score;
+    score.shape = mesh.aroundVertex(w);
+    for (int t : mesh.trianglesOf(w))
+      score.flips += mesh.centroidFlipped(t, query, flat) ? 1 : 0;
+    return score;
+  };
+  if (scoreOf(v).flips == 0)
     return false;
-  double shortest = std::numeric_limits<double>::infinity();
-  for (int w : mesh.neighbours(v))
-    shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
-  const Vec3 normal = mesh.normal(v);
-  const Vec3 first = normal.unitOrthogonal(), second = normal.cross(first);
-  const TrianglePoint start = mesh.point(v);
-  TrianglePoint best = start;
-  FlipScore bestScore = current;
-  bool moved = false;
-  for (double fraction : kStepFractions)
-    for (int k = 0; k < kDirections; ++k)
-    {
-      const double angle = 2.0 * kPi * k / kDirections;
-      const TrianglePoint tried =
-        walkOnSurface(surface, start, fraction * shortest * (std::cos(angle) * first + std::sin(angle) * second));
-      mesh.moveTo(v, tried);
-      if ((mesh.position(v) - origin).norm() > reach)
-        continue;
-      const FlipScore score = flipScore(mesh, v, query, flat);
-      if (score.shape.folds <= current.shape.folds && score.flips < current.flips && score.betterThan(bestScore))
-        bestScore = score, best = tried, moved = true;
-    }
-  mesh.moveTo(v, best);
-  return moved;
+  return tryShortMoves(surface, mesh, v, origin, reach, scoreOf, [](const FlipScore& score, const FlipScore& current) {
+    return score.shape.folds <= current.shape.folds && score.flips < current.flips;
+  });
 }
 
 /// The movable vertices within `rings` edges of a folded triangle.
