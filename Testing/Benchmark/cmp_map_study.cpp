@@ -10,13 +10,14 @@
 ///
 ///   cmp_map_study --data DIR [--l0 MODEL|FILE.obj] [--level 5]
 ///                 [--relax 4] [--models 381,382,...] [--fixed-curves]
-///                 [--sweeps N] [--map-iterations N] [--map-gain G]
+///                 [--sweeps N] [--map-iterations N] [--map-gain G] [--density C]
 ///                 [--no-repair] [--details] [--write DIR]
 ///
 /// One line per model, then the largest and median distance and the summed
 /// folds: the table the map issue's notes give. `--sweeps` sets the
 /// straightening sweeps, `--map-iterations` and `--map-gain` the map's
-/// Newton steps at most and the least relative gain of one, `--no-repair` counts the folds before any repair,
+/// Newton steps at most and the least relative gain of one, `--density`
+/// the curvature density, `--no-repair` counts the folds before any repair,
 /// `--details` prints L0's valences and the folds left near each landmark,
 /// `--write` each remesh as DIR/NAME.remesh.off with its folded triangles
 /// (NAME.folds.txt: corner and centroid criterion per triangle) and where
@@ -147,6 +148,7 @@ int main(int argc, char** argv)
   int sweeps = -1;
   int mapIterations = -1;
   double mapGain = -1.0;
+  double density = -1.0;
   std::string writeDir;
   std::vector<std::string> names{ "381", "382", "383", "384", "385", "387", "388", "389", "391", "392", "spot" };
   for (int i = 1; i < argc; ++i)
@@ -182,12 +184,14 @@ int main(int argc, char** argv)
       mapIterations = std::stoi(value());
     else if (arg == "--map-gain")
       mapGain = std::stod(value());
+    else if (arg == "--density")
+      density = std::stod(value());
     else if (arg == "--fixed-curves")
       fixedCurves = true;
     else
     {
       std::cerr << "usage: cmp_map_study --data DIR [--l0 MODEL|FILE.obj] [--level 5] [--relax 4] "
-                   "[--models A,B,...] [--fixed-curves] [--sweeps N] [--map-iterations N] [--map-gain G] "
+                   "[--models A,B,...] [--fixed-curves] [--sweeps N] [--map-iterations N] [--map-gain G] [--density C] "
                    "[--no-repair] [--details] [--write DIR]\n";
       return 2;
     }
@@ -262,6 +266,8 @@ int main(int argc, char** argv)
     options.map.maximumIterations = mapIterations;
   if (mapGain >= 0.0)
     options.map.leastRelativeGain = mapGain;
+  if (density >= 0.0)
+    options.map.curvatureDensity = density;
   std::vector<cmp::RemeshModel> remeshModels;
   std::vector<Model*> placed;
   for (auto& model : models)
