@@ -72,7 +72,7 @@ public:
   /// \brief Adaptive refinement (default 0: uniform). With a value t > 0,
   ///        `Level` is the maximum level and a triangle is quadrisected
   ///        only while, on any model of the input, the surface at one of
-  ///        its edge midpoints or its centroid is farther than t times that
+  ///        the 12 points of its next two quadrisections is farther than t times that
   ///        model's bounding-box diagonal from the flat triangle. Neighbours
   ///        then differ by at most one level and T-junctions are closed by
   ///        bisection, so every model still shares one connectivity (give

@@ -238,6 +238,70 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
   EXPECT_EQ(adaptive.level, 6);
   EXPECT_LT(adaptive.triangles.size() * 3, uniform.triangles.size());
 
+  // The rule's contract: a triangle it leaves whole below the maximum level
+  // is within the tolerance on every model at each of the 12 points of its
+  // next two quadrisections, not only at its edge midpoints and centroid
+  // (the rule once probed only those, and left triangles whose surface
+  // bulged between them).
+  int checked = 0, exceeded = 0, quarterPointsOnly = 0;
+  for (std::size_t t = 0; t < adaptive.triangles.size(); ++t)
+  {
+    if (adaptive.levelOfTriangle[t] >= adaptive.level)
+      continue;
+    const int base = adaptive.patchOfTriangle[t];
+    std::array<Vec2, 3> corner;
+    for (int k = 0; k < 3; ++k)
+      ASSERT_TRUE(locationInBaseTriangle(domain, adaptive.locations[adaptive.triangles[t][k]], base, corner[k]));
+    // Only the rule's own triangles: not the halves of a bisection that
+    // closes a finer neighbour.
+    const double share = std::abs(cross2(corner[1] - corner[0], corner[2] - corner[0]));
+    if (std::abs(share * std::pow(4.0, adaptive.levelOfTriangle[t]) - 1.0) > 1e-6)
+      continue;
+    for (std::size_t m = 0; m < collection.size(); ++m)
+    {
+      const ParameterizedSurface& surface = *collection[m];
+      std::array<Vec3, 3> at;
+      SurfaceSample sample;
+      for (int k = 0; k < 3; ++k)
+      {
+        BaseLocation location;
+        location.triangle = base;
+        location.coordinates = { 1.0 - corner[k].x() - corner[k].y(), corner[k].x(), corner[k].y() };
+        ASSERT_TRUE(surface.locate(location, sample).ok());
+        at[k] = surface.position(sample);
+      }
+      bool beyond = false, beyondAtMidpointOrCentroid = false;
+      for (int i = 0; i <= 4; ++i)
+        for (int j = 0; i + j <= 4; ++j)
+        {
+          const double w[3] = { i / 4.0, j / 4.0, (4 - i - j) / 4.0 };
+          if (w[0] == 1.0 || w[1] == 1.0 || w[2] == 1.0)
+            continue;
+          const Vec2 p = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
+          BaseLocation location;
+          location.triangle = base;
+          location.coordinates = { 1.0 - p.x() - p.y(), p.x(), p.y() };
+          ASSERT_TRUE(surface.locate(location, sample).ok());
+          const double off = (surface.position(sample) - (w[0] * at[0] + w[1] * at[1] + w[2] * at[2])).norm();
+          const bool far = off > tolerance * surface.boundingBoxDiagonal() * (1.0 + 1e-9);
+          beyond = beyond || far;
+          const bool midpoint = (i % 2 == 0 && j % 2 == 0);
+          beyondAtMidpointOrCentroid = beyondAtMidpointOrCentroid || (far && midpoint);
+        }
+      exceeded += beyond;
+      quarterPointsOnly += beyond && !beyondAtMidpointOrCentroid;
+      ++checked;
+    }
+  }
+  std::cout << checked << " judged triangles and models, " << exceeded << " beyond the tolerance, "
+            << quarterPointsOnly << " only between the edge midpoints and the centroid\n";
+  EXPECT_GT(checked, 10000);
+  // A few leaves come from splits that balance a finer neighbour, which the
+  // rule did not ask for (4 of 47,886 here); with the midpoints and the
+  // centroid only, 96 of 46,374 were beyond, 89 of them between those.
+  EXPECT_LE(exceeded * 2000, checked);
+  EXPECT_LE(quarterPointsOnly * 2000, checked);
+
   // Every leaf the rule left alone is flat enough on every model.
   for (std::size_t i = 0; i < names.size(); ++i)
   {

@@ -486,11 +486,25 @@ SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& mode
 {
   return [models, tolerance](const std::array<BaseLocation, 3>& corners, int)
   {
-    // Edge midpoints and centroid, in the corners' base triangle.
-    std::array<BaseLocation, 4> probes;
-    const std::array<std::array<double, 3>, 4> mix{ { { 0.5, 0.5, 0.0 }, { 0.0, 0.5, 0.5 }, { 0.5, 0.0, 0.5 },
-      { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 } } };
-    for (int i = 0; i < 4; ++i)
+    // The points of the triangle's next two 1-to-4 refinements (its
+    // barycentric lattice of order 4 without the corners), in the corners'
+    // base triangle: a bump between the edge midpoints and the centroid
+    // (the rim of an ear, a hoof's edge) shows there.
+    constexpr int kOrder = 4;
+    constexpr int kProbes = (kOrder + 1) * (kOrder + 2) / 2 - 3;
+    std::array<std::array<double, 3>, kProbes> mix{};
+    int made = 0;
+    for (int i = 0; i <= kOrder; ++i)
+      for (int j = 0; i + j <= kOrder; ++j)
+      {
+        const int k = kOrder - i - j;
+        if (i == kOrder || j == kOrder || k == kOrder)
+          continue;
+        mix[made++] = { static_cast<double>(i) / kOrder, static_cast<double>(j) / kOrder,
+          static_cast<double>(k) / kOrder };
+      }
+    std::array<BaseLocation, kProbes> probes;
+    for (int i = 0; i < kProbes; ++i)
     {
       probes[i].triangle = corners[0].triangle;
       for (int c = 0; c < 3; ++c)
@@ -508,7 +522,7 @@ SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& mode
         at[c] = model->position(sample);
       }
       const double limit = tolerance * model->boundingBoxDiagonal();
-      for (int i = 0; i < 4; ++i)
+      for (int i = 0; i < kProbes; ++i)
       {
         if (!model->locate(probes[i], sample).ok())
           return true;

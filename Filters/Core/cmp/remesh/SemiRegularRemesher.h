@@ -158,7 +158,8 @@ private:
 
 /// \brief The split rule for adaptive remeshing of a collection: a triangle
 ///        is split when, on any of `models`, the surface point at one of
-///        its edge midpoints or at its centroid lies farther than
+///        the 12 points of its next two quadrisections (its barycentric
+///        lattice of order 4 without the corners) lies farther than
 ///        `tolerance` times that model's bounding-box diagonal from the
 ///        point the flat triangle through its corners' surface points puts
 ///        there. Models must outlive the rule.
