@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 
 namespace cmp::bench
 {
@@ -61,6 +62,19 @@ std::vector<ModelSpec> discoverModels(const std::string& dataDir, std::vector<st
   addFourLegged(fs::path(dataDir) / "shrec07-fourleg", models, skipped);
   addSpot(fs::path(dataDir) / "spot", models, skipped);
   return models;
+}
+
+std::vector<std::string> splitCommas(const std::string& text)
+{
+  std::vector<std::string> parts;
+  std::istringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ','))
+  {
+    if (!part.empty())
+      parts.push_back(part);
+  }
+  return parts;
 }
 
 int levelsToReach(long triangles, long minTriangles)

@@ -19,6 +19,10 @@ namespace cmp::bench
 /// Models left out (no landmark file) are described in `skipped`.
 std::vector<ModelSpec> discoverModels(const std::string& dataDir, std::vector<std::string>& skipped);
 
+/// \brief The names in a comma-separated option value ("381,spot"), empty
+///        ones dropped.
+std::vector<std::string> splitCommas(const std::string& text);
+
 /// \brief Number of 1-to-4 subdivisions that take `triangles` to at least
 ///        `minTriangles`.
 int levelsToReach(long triangles, long minTriangles);

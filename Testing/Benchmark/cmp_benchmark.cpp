@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <sstream>
 #if defined(__GLIBC__) // defined by the C++ headers above
 #include <malloc.h>    // malloc_trim
 #endif
@@ -72,19 +71,6 @@ stages' figures such as the net length per sqrt(area)) plus a CSV beside them.
   --list                print the models and exit
   --help                print this
 )";
-
-std::vector<std::string> splitCommas(const std::string& text)
-{
-  std::vector<std::string> parts;
-  std::istringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ','))
-  {
-    if (!part.empty())
-      parts.push_back(part);
-  }
-  return parts;
-}
 
 /// \brief Parses a positive integer option value; false if it is not one.
 bool parseCount(const std::string& text, long& value)

@@ -23,6 +23,8 @@
 /// (NAME.folds.txt: corner and centroid criterion per triangle) and where
 /// its Hausdorff distance is reached (NAME.hausdorff.txt).
 
+#include "BenchmarkModels.h"
+
 #include <cmp/basedomain/BaseDomainBuilder.h>
 #include <cmp/io/Landmarks.h>
 #include <cmp/io/MeshFile.h>
@@ -41,7 +43,6 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -76,31 +77,19 @@ struct Model
   std::string error;
 };
 
-std::vector<std::string> split(const std::string& text)
-{
-  std::vector<std::string> parts;
-  std::istringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ','))
-    if (!part.empty())
-      parts.push_back(part);
-  return parts;
-}
-
+/// The landmarked model `name` of the shared data (the benchmark's list).
 bool locate(const std::string& data, const std::string& name, Model& model)
 {
-  model.name = name;
-  if (name == "spot")
-  {
-    model.meshPath = (fs::path(data) / "spot" / "spot.obj").string();
-    model.landmarkPath = (fs::path(data) / "spot" / "spot_shrec07.pinned").string();
-  }
-  else
-  {
-    model.meshPath = (fs::path(data) / "shrec07-fourleg" / (name + ".off")).string();
-    model.landmarkPath = (fs::path(data) / "shrec07-fourleg" / (name + ".vts")).string();
-  }
-  return fs::exists(model.meshPath) && fs::exists(model.landmarkPath);
+  std::vector<std::string> skipped;
+  for (const cmp::bench::ModelSpec& spec : cmp::bench::discoverModels(data, skipped))
+    if (spec.name == name)
+    {
+      model.name = name;
+      model.meshPath = spec.meshPath;
+      model.landmarkPath = spec.landmarkPath;
+      return true;
+    }
+  return false;
 }
 
 cmp::Status read(Model& model)
@@ -171,7 +160,7 @@ int main(int argc, char** argv)
     else if (arg == "--relax")
       relax = std::stoi(value());
     else if (arg == "--models")
-      names = split(value());
+      names = cmp::bench::splitCommas(value());
     else if (arg == "--write")
       writeDir = value();
     else if (arg == "--sweeps")
