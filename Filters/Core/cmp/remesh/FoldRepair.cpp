@@ -167,6 +167,21 @@ std::vector<std::vector<int>> vertexNeighbours(const SemiRegularMesh& remesh)
 
 /// The remesh on the surface while it is repaired: where each vertex is,
 /// the surface normal under it, and which triangles and vertices touch it.
+/// The centroid criterion for one triangle (a, b, c): whether its normal
+/// points against that of the `surface` triangle nearest to its centroid.
+/// Zero area on either side gives a zero product: not flipped.
+bool facesAgainstNearest(const Vec3& a, const Vec3& b, const Vec3& c, const ClosestPointQuery& query,
+  const TriangleMesh& surface)
+{
+  const ClosestPointQuery::Result nearest = query.closest((a + b + c) / 3.0);
+  if (nearest.triangle < 0)
+    return false;
+  const Triangle& under = surface.triangles[nearest.triangle];
+  const Vec3 there =
+    (surface.points[under[1]] - surface.points[under[0]]).cross(surface.points[under[2]] - surface.points[under[0]]);
+  return (b - a).cross(c - a).dot(there) < 0.0;
+}
+
 class FoldedRemesh
 {
 public:
@@ -274,14 +289,7 @@ public:
   bool centroidFlipped(int t, const ClosestPointQuery& query, const TriangleMesh& flat) const
   {
     const Triangle& tri = remesh_.triangles[t];
-    const Vec3 centroid = (positions_[tri[0]] + positions_[tri[1]] + positions_[tri[2]]) / 3.0;
-    const ClosestPointQuery::Result nearest = query.closest(centroid);
-    if (nearest.triangle < 0)
-      return false;
-    const Triangle& under = flat.triangles[nearest.triangle];
-    const Vec3 own = (positions_[tri[1]] - positions_[tri[0]]).cross(positions_[tri[2]] - positions_[tri[0]]);
-    const Vec3 there = (flat.points[under[1]] - flat.points[under[0]]).cross(flat.points[under[2]] - flat.points[under[0]]);
-    return own.dot(there) < 0.0;
+    return facesAgainstNearest(positions_[tri[0]], positions_[tri[1]], positions_[tri[2]], query, flat);
   }
 
 private:
@@ -662,20 +670,11 @@ std::vector<char> centroidFlippedTriangles(const TriangleMesh& surface, const Tr
 {
   std::vector<char> flipped(placed.triangles.size(), 0);
   const ClosestPointQuery query(surface);
-  const auto normal = [](const TriangleMesh& mesh, const Triangle& t) {
-    return Vec3((mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]));
-  };
   for (std::size_t t = 0; t < placed.triangles.size(); ++t)
   {
     const Triangle& triangle = placed.triangles[t];
-    const Vec3 centroid = (placed.points[triangle[0]] + placed.points[triangle[1]] + placed.points[triangle[2]]) / 3.0;
-    const ClosestPointQuery::Result nearest = query.closest(centroid);
-    if (nearest.triangle < 0)
-      continue;
-    const Vec3 own = normal(placed, triangle);
-    const Vec3 under = normal(surface, surface.triangles[nearest.triangle]);
-    // Both zero-area cases give a zero product: not counted.
-    flipped[t] = own.dot(under) < 0.0;
+    flipped[t] = facesAgainstNearest(
+      placed.points[triangle[0]], placed.points[triangle[1]], placed.points[triangle[2]], query, surface);
   }
   return flipped;
 }
