@@ -1298,7 +1298,6 @@ public:
     return {};
   }
 
-  /// Every vertex's place in L0 (the landmarks' from `map`).
   /// Every vertex's place (the landmarks' from `start`) and how many left
   /// their first patch.
   void places(const PatchParameterization& start, PatchParameterization& result, int& crossing) const
