@@ -5,9 +5,10 @@
 
 CASE is one of: shipped-examples, collection, given-base-domain,
 failure-isolation, crash-isolation, model-timeout, reproducible-files,
-argument-errors, base-domain-mismatch. Every case but
-argument-errors and shipped-examples needs the shared data (shipped-examples
-takes the project's Data folder). Each run writes into a fresh temporary
+argument-errors, base-domain-mismatch, cut-along-the-map. Every case but
+argument-errors, shipped-examples and cut-along-the-map needs the shared
+data (those two take the project's Data folder; cut-along-the-map remeshes
+two of its CGAL quadrupeds, from libcgal-demo). Each run writes into a fresh temporary
 folder.
 
 The command's PNG pictures need an X display. With --pictures (run the test
@@ -1619,6 +1620,37 @@ def check_report_pages(out, names, pictures):
         check("failed" not in text.lower(), page + " says something failed")
 
 
+def case_cut_along_the_map(tmp):
+    """The cut along the map where the map makes needles and triangles of no
+    area: the bull with L0 built from the bear (two CGAL quadrupeds of
+    libcgal-demo, which setup.sh installs). The cut once failed on the bull
+    (a triangle whose image is a needle from a corner on a curve, another of
+    no area, three corners within rounding of one curve), and the bull kept
+    its straightened curves."""
+    source = os.path.join(DATA, "cgal-quadrupeds")
+    with open(os.path.join(source, "collection.json")) as f:
+        collection = json.load(f)
+    models = {model["name"]: model for model in collection["models"]}
+    collection["models"] = [models["bear"], models["bull"]]  # L0 from the bear
+    collection["stages"] = {"level": 2, "relax_samples": 0}
+    folder = os.path.join(tmp, "bear-and-bull")
+    os.makedirs(folder)
+    # The shipped L0 stays beside it; --base-domain-from builds another.
+    for name in [model["landmarks"] for model in collection["models"]] + [collection["base_domain"]]:
+        shutil.copy(os.path.join(source, name), folder)
+    with open(os.path.join(folder, "collection.json"), "w") as f:
+        json.dump(collection, f)
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(["--collection", folder, "--base-domain-from", "0", "--no-render"], out,
+                                             environment={"CMP_CACHE_DIR": os.path.join(tmp, "cache")})
+    check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
+    check_equal(report["failed"], [], "failed models")
+    for name in ("bear", "bull"):
+        figures = report["models"][name]["straighten"]["map"]
+        check(figures["applied"], "%s: the curves were not moved: %s" % (name, figures.get("reason")))
+    check("kept their straightened places" not in stdout, "a console line for curves kept")
+
+
 CASES = {
     "default-collection": case_default_collection,
     "shipped-examples": case_shipped_examples,
@@ -1630,6 +1662,7 @@ CASES = {
     "reproducible-files": case_reproducible_files,
     "lower-stretch": case_lower_stretch,
     "free-curves": case_free_curves,
+    "cut-along-the-map": case_cut_along_the_map,
     "fold-repair": case_fold_repair,
     "relax-samples": case_relax_samples,
     "argument-errors": case_argument_errors,

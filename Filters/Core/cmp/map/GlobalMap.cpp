@@ -863,15 +863,16 @@ public:
         base = net.patchOfTriangle[t];
         drawing = drawing_[base];
       }
-      if (free >= 0 && !(overlapArea(p, drawing) > 0.0))
+      // Start from the base triangle that holds the image's centroid,
+      // walked to from the free corner (so on the image's own sheet round a
+      // landmark): the corner may lie on a side of its own base triangle or
+      // at the tip of a needle whose body lies beyond it.
+      const Vec2 centroid = (p[0] + p[1] + p[2]) / 3.0;
+      if (free >= 0)
       {
-        // The free corner on an edge of its base triangle, the triangle
-        // beyond it: start across that edge.
-        const std::array<double, 3> b = barycentricIn(drawing, p[free]);
-        const int c = static_cast<int>(std::min_element(b.begin(), b.end()) - b.begin());
-        int next = -1;
-        drawing = geometry_.unfold(base, drawing, (c + 1) % 3, next);
-        base = next;
+        const std::array<double, 3> b = barycentricIn(drawing, centroid);
+        if (std::min({ b[0], b[1], b[2] }) < 0.0 && !geometry_.walk(base, drawing, p[free], centroid))
+          return Status::error("cutting along the map: triangle " + std::to_string(t) + " could not be followed across L0");
       }
       std::vector<int> queue{ base };
       std::vector<Drawing> drawings{ drawing };
@@ -895,7 +896,13 @@ public:
         }
       }
       if (overlayStart[t] == static_cast<int>(overlayBase.size()))
-        return Status::error("cutting along the map: triangle " + std::to_string(t) + " overlaps no base triangle");
+      {
+        // An image too small for the clipping to measure (a surface
+        // triangle of no area, its corners within rounding of each other)
+        // lies in the base triangle that holds its centroid.
+        overlayBase.push_back(queue[0]);
+        overlayDrawing.push_back(drawings[0]);
+      }
     }
     overlayStart[triangles] = static_cast<int>(overlayBase.size());
 
@@ -921,6 +928,7 @@ public:
     // of the base triangles it overlaps, so on the right sheet) lies on it.
     std::vector<int> onEdge(n, -1);
     std::vector<double> onEdgeAt(n, 0.0);
+    std::vector<double> onEdgeOff(n, 0.0); // and its distance from that edge
     std::vector<int> newEdge;        // per new vertex: its base edge
     std::vector<double> newAlong;    // and its place along it
     for (int t = 0; t < triangles; ++t)
@@ -944,10 +952,34 @@ public:
             {
               onEdge[v] = e;
               onEdgeAt[v] = along;
+              onEdgeOff[v] = std::abs(f);
             }
           }
         }
       }
+    // A triangle never has its three corners on one curve (a sliver along
+    // it, in no patch): of three within `snap` of one base edge, the
+    // farthest from it stays off.
+    for (int t = 0; t < triangles; ++t)
+    {
+      const Triangle& tri = mesh.triangle(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        const int e = onEdge[tri[k]];
+        if (e < 0)
+          continue;
+        int on = 0, farthest = -1;
+        for (int v : tri)
+        {
+          const bool lies = landmarkOf[v] >= 0 ? incident(landmarkOf[v], e) : onEdge[v] == e;
+          on += lies ? 1 : 0;
+          if (lies && landmarkOf[v] < 0 && (farthest < 0 || onEdgeOff[v] > onEdgeOff[farthest]))
+            farthest = v;
+        }
+        if (on == 3)
+          onEdge[farthest] = -1;
+      }
+    }
     const auto vertexOnEdge = [&](int v, int e) {
       if (v >= n)
         return newEdge[v - n] == e;
