@@ -134,6 +134,7 @@ TEST_F(RemeshOfSpheres, RefinesAndRelaxesOverTheWholeCollection)
   options.adaptiveTolerance = 0.002;
   options.sampleRelaxationIterations = 2;
   options.repairFolds = false;
+  options.threads = 1;
   std::vector<double> progress;
   options.progress = [&](double f) { progress.push_back(f); };
   CollectionRemesh remeshed;
@@ -157,6 +158,44 @@ TEST_F(RemeshOfSpheres, RefinesAndRelaxesOverTheWholeCollection)
   {
     EXPECT_EQ(report.models[m].repair.movedVertices, 0);
     EXPECT_EQ(report.models[m].foldedBeforeRepair, report.models[m].foldedAfterRepair);
+  }
+}
+
+TEST_F(RemeshOfSpheres, PlacesTheModelsOnSeveralThreadsWithTheSameResult)
+{
+  // Six models (the two spheres three times), so that each of three threads
+  // gets some; every figure but the times is the same as on one thread.
+  std::vector<RemeshModel> six;
+  for (int copy = 0; copy < 3; ++copy)
+    for (const RemeshModel& model : models())
+      six.push_back(model);
+  RemeshOptions options;
+  options.level = 4;
+  options.sampleRelaxationIterations = 1;
+  CollectionRemesh alone;
+  RemeshReport aloneReport;
+  options.threads = 1;
+  ASSERT_TRUE(remesh(domain_, six, alone, options, &aloneReport).ok());
+  for (int threads : { 3, 0 })
+  {
+    options.threads = threads;
+    std::vector<double> progress;
+    options.progress = [&](double f) { progress.push_back(f); };
+    CollectionRemesh together;
+    RemeshReport report;
+    ASSERT_TRUE(remesh(domain_, six, together, options, &report).ok()) << threads << " threads";
+    ASSERT_FALSE(progress.empty());
+    EXPECT_EQ(progress.back(), 1.0);
+    EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+    ASSERT_EQ(together.models.size(), six.size());
+    for (std::size_t m = 0; m < six.size(); ++m)
+    {
+      EXPECT_EQ(together.models[m].positions, alone.models[m].positions) << "model " << m << ", " << threads;
+      EXPECT_EQ(together.models[m].folded, alone.models[m].folded) << "model " << m;
+      EXPECT_EQ(together.models[m].centroidFlipped, alone.models[m].centroidFlipped) << "model " << m;
+      EXPECT_EQ(report.models[m].hausdorffDistance, aloneReport.models[m].hausdorffDistance) << "model " << m;
+      EXPECT_EQ(report.models[m].foldedBeforeRepair, aloneReport.models[m].foldedBeforeRepair) << "model " << m;
+    }
   }
 }
 

@@ -5,11 +5,14 @@
 #include <cmp/remesh/SampleRelaxation.h>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace cmp
 {
@@ -172,23 +175,57 @@ Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localMod
 
   const std::vector<int> nearestLandmarks = nearestLandmarkOfTriangles(result.mesh, domain.mesh.vertexCount());
   result.models.resize(localModels.size());
-  const double modelCount = std::max<double>(1.0, static_cast<double>(localModels.size()));
-  for (std::size_t m = 0; m < localModels.size(); ++m)
-  {
-    if (Status s = placeModel(domain, result.mesh, nearestLandmarks, localModels[m], options, result.models[m],
+  // Each model is placed on its own: a thread takes the next model not yet
+  // taken, and the calling thread (the only one to report progress) works
+  // too. The first model that fails, in the order given, is reported.
+  const int count = static_cast<int>(localModels.size());
+  const int threadCount = std::clamp(
+    options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
+    std::max(1, count));
+  std::vector<Status> placed(localModels.size());
+  std::atomic<int> next{ 0 };
+  std::atomic<int> done{ 0 };
+  int reported = 0; // models done when the calling thread last reported progress
+  const auto work = [&](bool reportProgress) {
+    for (int m = next++; m < count; m = next++)
+    {
+      try
+      {
+        placed[m] = placeModel(domain, result.mesh, nearestLandmarks, localModels[m], options, result.models[m],
           local.models[m]);
-        !s.ok())
+      }
+      catch (const std::exception& error)
+      {
+        placed[m] = Status::error(std::string("placing the remesh failed: ") + error.what());
+      }
+      const int finished = ++done;
+      if (reportProgress && options.progress && finished > reported)
+      {
+        reported = finished;
+        options.progress(static_cast<double>(finished) / count);
+      }
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threadCount; ++t)
+    helpers.emplace_back(work, false);
+  work(true);
+  for (std::thread& helper : helpers)
+    helper.join();
+  for (int m = 0; m < count; ++m)
+  {
+    if (!placed[m].ok())
     {
       if (report)
       {
         *report = std::move(local);
-        report->failedModel = static_cast<int>(m);
+        report->failedModel = m;
       }
-      return s;
+      return placed[m];
     }
-    if (options.progress)
-      options.progress((m + 1) / modelCount);
   }
+  if (options.progress && reported < count)
+    options.progress(1.0);
   out = std::move(result);
   if (report)
     *report = std::move(local);

@@ -47,7 +47,12 @@ struct RemeshOptions
   FoldRepairOptions foldRepair;
   /// \brief Measure each remesh's sampled two-sided distance to its model.
   bool computeDistance = true;
-  /// \brief Called with the fraction (0 to 1) of the models placed, if set.
+  /// \brief Threads that place the models at once (0: one per hardware
+  ///        thread), at most one per model. The result does not depend on
+  ///        it; the threads have ended when `remesh()` returns.
+  int threads = 0;
+  /// \brief Called with the fraction (0 to 1) of the models placed, if set,
+  ///        always on the calling thread.
   std::function<void(double)> progress;
 };
 
