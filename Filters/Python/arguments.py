@@ -99,6 +99,10 @@ def parse_arguments(argv):
                         help="kill a model's reading, or its tracing and straightening, after SECONDS and fail the "
                         "model \"timed out after SECONDS s\" (default %g, an hour: far above what a model of "
                         "a million triangles takes; 0: no limit)" % DEFAULT_MODEL_TIMEOUT)
+    parser.add_argument("--jobs", type=int, metavar="N",
+                        help="read, trace and straighten up to N models at once, each in its own process (default: "
+                        "the cores this process may use; under mpirun, those shared among the ranks on one machine); "
+                        "the files written are the same for any N")
     parser.add_argument("--timing-arrays", action="store_true",
                         help="keep the filters' timing field arrays (TotalSeconds and the like) in the .vtp and "
                         ".vtm files written; without it they are left out, so that every file but timings.json "
@@ -118,6 +122,8 @@ def parse_arguments(argv):
         args.level = DEFAULT_LEVEL
     if not args.model_timeout >= 0:
         parser.error("--model-timeout %s: give a number of seconds, 0 or more (0: no limit)" % args.model_timeout)
+    if args.jobs is not None and args.jobs < 1:
+        parser.error("--jobs %d: give a number of models to run at once, 1 or more" % args.jobs)
     if args.relax_samples is None:
         args.relax_samples = DEFAULT_SAMPLE_RELAXATION
     if args.view_up is None:

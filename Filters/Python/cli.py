@@ -26,13 +26,15 @@ Usage:
                     [--base-domain L0.vtp | --base-domain-from N] [--level J]
                     [--adaptive-tolerance T] [--relax-samples N] [--transfer-from NAME] [--details-from NAME] [--pca K]
                     [--blend] [--blend-weights W0,W1,...] [--blend-alignment MODE]
-                    [--no-render] [--view-up AXIS] [--model-timeout SECONDS] [--timing-arrays]
+                    [--no-render] [--view-up AXIS] [--model-timeout SECONDS] [--jobs N] [--timing-arrays]
                     --output DIR
+  mpirun -np N consistent-remesh ARGS   (the models shared out over N processes)
 
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others (its reading and its tracing
 and straightening run in child processes, so a crash fails it alone, and so
-does a child still running after --model-timeout, an hour by default); the
+does a child still running after --model-timeout, an hour by default; up
+to --jobs models run at once, by default one per core); the
 exit status is 1 if any model failed or a requested stage failed, 2 for
 a usage error, 3 if the base domain could not be made and 4 if a collection's meshes cannot be
 had (the package is not installed or has changed). If the collection's remeshing fails, every
@@ -55,7 +57,8 @@ from . import collection
 from . import report as written_report
 from .arguments import parse_arguments, prepare_output_folder
 from .figures import describe_base_domain
-from .isolation import polydata_from_text, polydata_to_text, run_in_child, run_model_stage
+from .isolation import polydata_from_text, polydata_to_text, run_in_child, run_model_stages
+from .ranks import default_jobs, this_job
 from .render import run_pictures
 from .stages import (
     Model,
@@ -82,6 +85,7 @@ EXIT_NO_COLLECTION = 4
 
 def main(argv=None):
     args = parse_arguments(sys.argv[1:] if argv is None else argv)
+    ranks = this_job()
     started = time.time()
     clock = time.perf_counter()
     keep_timing_arrays(args.timing_arrays)
@@ -89,6 +93,103 @@ def main(argv=None):
     # generic "returned failure" log lines would only repeat them.
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
     report = {"models": {}, "command": ["consistent-remesh"] + list(sys.argv[1:] if argv is None else argv)}
+    jobs = args.jobs if args.jobs is not None else default_jobs(ranks)
+    # Rank 0 unpacks the meshes and makes the output folder; every rank
+    # stops on its word if it could not.
+    status = None
+    if ranks.rank == 0:
+        status = _prepare(args, report)
+    status = ranks.broadcast(status)
+    if status is not None:
+        return status
+    models = [Model(m, l) for m, l in zip(args.mesh, args.landmarks)]
+    mine = [(index, model) for index, model in enumerate(models) if ranks.owns(index)]
+
+    # Each model's files are read, and later traced and straightened, in a
+    # child process: a crash on one model's file fails that model alone.
+    # Up to `jobs` models run at once.
+    def reading(index, model):
+        def read():
+            print("[%d/%d] %s: reading" % (index + 1, len(models), model.name), flush=True)
+            read_landmarked_surface(model)
+        return (model, "read", read, ["surface"])
+
+    errors = run_model_stages([reading(index, model) for index, model in mine], jobs, args.model_timeout)
+    for position, error in errors.items():
+        if error is not None:
+            mine[position][1].fail(error)
+
+    domain = _base_domain(args, models, ranks, report)
+
+    def processing(index, model):
+        step = "[%d/%d] %s:" % (index + 1, len(models), model.name)
+
+        def process():
+            if model.surface is None:  # read by another rank
+                read_landmarked_surface(model)
+            check_against_base_domain(model, domain)
+            print("%s tracing the net" % step, flush=True)
+            traced = trace_net(model, domain, args.output)
+            print("%s straightening the net (traced in %.2f s)" % (step, model.report["seconds"]["trace"]),
+                  flush=True)
+            straighten_net(model, domain, traced, args.output, args.lower_stretch, args.free_curves)
+            print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
+        return (model, "process", process, ["parameterized", "curves"])
+
+    # The models read, in order; each rank takes the next one not yet taken
+    # whenever it has a free slot.
+    read = sorted(index for part in ranks.all_gather([index for index, model in mine if model.surface is not None])
+                  for index in part)
+    processed = {}
+    if domain is None:
+        for index, model in mine:
+            if model.surface is not None:
+                model.fail("no base domain: " + report["base_domain"]["error"])
+    else:
+        counter = ranks.counter()
+        errors = run_model_stages([processing(index, models[index]) for index in read], jobs, args.model_timeout,
+                                  counter.claim, ranks.progress if ranks.size > 1 else None)
+        counter.free()
+        for position, error in errors.items():
+            index = read[position]
+            processed[index] = models[index]
+            if error is not None:
+                models[index].fail(error)
+                print("[%d/%d] %s: FAILED: %s" % (index + 1, len(models), models[index].name,
+                                                  models[index].report["error"]), flush=True)
+
+    if ranks.size > 1:
+        # Every rank's models to rank 0, which does the rest; the others end
+        # with its exit status. A model straightened on another rank than
+        # the one that read it keeps the reader's times too (the base
+        # domain's).
+        sent = [(index, "read", model.report, None, None) for index, model in mine if index not in processed]
+        sent += [(index, "processed", model.report, polydata_to_text(model.parameterized),
+                  polydata_to_text(model.curves)) for index, model in sorted(processed.items())]
+        parts = ranks.gather(sent)
+        if ranks.rank != 0:
+            return ranks.end(None)
+        ranks.use_every_core()
+        entries = [entry for part in parts for entry in part]
+        for index, kind, model_report, parameterized, curves in sorted(entries, key=lambda e: e[1] == "processed"):
+            model = models[index]
+            reader_seconds = model.report["seconds"] if kind == "processed" else {}
+            model.report = model_report
+            for stage, seconds in reader_seconds.items():
+                model.report["seconds"].setdefault(stage, seconds)
+            model.parameterized = polydata_from_text(parameterized)
+            model.curves = polydata_from_text(curves)
+    status = 1
+    try:
+        status = _collection_stages(args, models, domain, report, started, clock)
+    finally:
+        ranks.end(status)
+    return status
+
+
+def _prepare(args, report):
+    """Unpacks a collection's meshes and makes the output folder: None, or
+    the exit status if either cannot be done (said on stderr)."""
     # The meshes first: a missing package leaves no empty output folder.
     if args.collection_data is not None:
         data = args.collection_data
@@ -104,62 +205,51 @@ def main(argv=None):
     if problem:
         print("consistent-remesh: %s" % problem, file=sys.stderr)
         return 2
-    models = [Model(m, l) for m, l in zip(args.mesh, args.landmarks)]
+    return None
 
-    # Each model's files are read, and later traced and straightened, in a
-    # child process: a crash on one model's file fails that model alone.
-    for index, model in enumerate(models):
-        print("[%d/%d] %s: reading" % (index + 1, len(models), model.name), flush=True)
+
+def _base_domain(args, models, ranks, report):
+    """Reads (rank 0) or builds (the rank of --base-domain-from's model) the
+    base domain, writes base_domain.vtp and fills report["base_domain"], on
+    every rank: the base domain, or None if it could not be had."""
+    if args.base_domain is not None:
+        root = 0
+    else:
+        root = ranks.owner(args.base_domain_from)
+    made = None
+    if ranks.rank == root:
         try:
-            run_model_stage(model, "read", lambda: read_landmarked_surface(model), ["surface"],
-                            args.model_timeout)
+            if args.base_domain is not None:
+                domain = polydata_from_text(run_in_child("read", "base domain",
+                                                         lambda: polydata_to_text(load_base_domain(args.base_domain)),
+                                                         "reading the base domain", args.model_timeout))
+                source = args.base_domain
+            else:
+                model = models[args.base_domain_from]
+                if model.surface is None:
+                    raise StageError("model %s, which should give the base domain, failed: %s"
+                                     % (model.name, model.report["error"]))
+                print("base domain from %s" % model.name, flush=True)
+                domain = build_base_domain(model)
+                source = "built from %s" % model.name
+            write_polydata(domain, os.path.join(args.output, "base_domain.vtp"))
+            made = (polydata_to_text(domain) if ranks.size > 1 else domain, source, None)
         except StageError as error:
-            model.fail(error)
+            made = (None, None, str(error))
+    domain, source, error = ranks.broadcast(made, root)
+    if error is not None:
+        report["base_domain"] = {"error": error}
+        return None
+    if ranks.size > 1:
+        domain = polydata_from_text(domain)
+    report["base_domain"] = describe_base_domain(domain, source)
+    return domain
 
-    domain = None
-    try:
-        if args.base_domain is not None:
-            domain = polydata_from_text(run_in_child("read", "base domain",
-                                                     lambda: polydata_to_text(load_base_domain(args.base_domain)),
-                                                     "reading the base domain", args.model_timeout))
-            source = args.base_domain
-        else:
-            model = models[args.base_domain_from]
-            if model.surface is None:
-                raise StageError("model %s, which should give the base domain, failed: %s"
-                                 % (model.name, model.report["error"]))
-            print("base domain from %s" % model.name, flush=True)
-            domain = build_base_domain(model)
-            source = "built from %s" % model.name
-        report["base_domain"] = describe_base_domain(domain, source)
-        write_polydata(domain, os.path.join(args.output, "base_domain.vtp"))
-    except StageError as error:
-        report["base_domain"] = {"error": str(error)}
-        domain = None
 
-    for index, model in enumerate(models):
-        if model.surface is None:
-            continue
-        if domain is None:
-            model.fail("no base domain: " + report["base_domain"]["error"])
-            continue
-        step = "[%d/%d] %s:" % (index + 1, len(models), model.name)
-
-        def process():
-            check_against_base_domain(model, domain)
-            print("%s tracing the net" % step, flush=True)
-            traced = trace_net(model, domain, args.output)
-            print("%s straightening the net (traced in %.2f s)" % (step, model.report["seconds"]["trace"]),
-                  flush=True)
-            straighten_net(model, domain, traced, args.output, args.lower_stretch, args.free_curves)
-            print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
-
-        try:
-            run_model_stage(model, "process", process, ["parameterized", "curves"], args.model_timeout)
-        except StageError as error:
-            model.fail(error)
-            print("%s FAILED: %s" % (step, model.report["error"]), flush=True)
-
+def _collection_stages(args, models, domain, report, started, clock):
+    """Rank 0's part once every model is straightened: the collection's
+    remesh, the stages on it, the pictures and the report; the exit
+    status."""
     # One run of the remesher for the whole collection: one connectivity.
     ready = [m for m in models if m.parameterized is not None]
     remeshes = None

@@ -103,20 +103,121 @@ def _child(write_end, stage, name, function):
             os._exit(code)
 
 
-def _read_until(read_end, deadline):
-    """Everything the child writes into `read_end` until it closes it, or
-    None if `deadline` (time.monotonic(); None: no deadline) passes first."""
-    chunks = []
-    with os.fdopen(read_end, "rb", buffering=0) as pipe:
-        while True:
-            if deadline is not None:
-                left = deadline - time.monotonic()
-                if left <= 0 or not select.select([pipe], [], [], left)[0]:
-                    return None
-            chunk = pipe.read(1 << 20)
-            if not chunk:
-                return b"".join(chunks)
-            chunks.append(chunk)
+# The outcome of a task that another process ran (run_children's claim).
+NOT_RUN = object()
+
+
+class _Child:
+    """One forked child running `function` (see run_children), and what it
+    has written into its pipe so far."""
+
+    def __init__(self, stage, name, function, doing, timeout):
+        self.doing = doing
+        self.timeout = timeout
+        self.chunks = []
+        sys.stdout.flush()
+        sys.stderr.flush()
+        read_end, write_end = os.pipe()
+        pid = os.fork()
+        if pid == 0:
+            os.close(read_end)
+            _child(write_end, stage, name, function)
+        os.close(write_end)
+        self.pid = pid
+        self.pipe = os.fdopen(read_end, "rb", buffering=0)
+        self.deadline = time.monotonic() + timeout if timeout > 0 else None
+
+    def fileno(self):
+        return self.pipe.fileno()
+
+    def read_some(self):
+        """Reads what the child has written; True once it has closed its
+        end (finished or died)."""
+        chunk = self.pipe.read(1 << 20)
+        if chunk:
+            self.chunks.append(chunk)
+            return False
+        return True
+
+    def kill(self):
+        """The outcome of a child still running at its deadline: it is
+        killed."""
+        os.kill(self.pid, signal.SIGKILL)
+        os.waitpid(self.pid, 0)
+        self.pipe.close()
+        return StageError("timed out after %g s while %s: the process doing it was killed (--model-timeout)"
+                          % (self.timeout, self.doing))
+
+    def outcome(self):
+        """The result of a child that has closed its pipe, or the StageError
+        saying why there is none (see run_in_child)."""
+        self.pipe.close()
+        _, status = os.waitpid(self.pid, 0)
+        data = b"".join(self.chunks)
+        if data:
+            try:
+                outcome = pickle.loads(data)
+            except Exception:
+                outcome = None
+            if outcome and outcome[0] == "ok":
+                return outcome[1]
+            if outcome and outcome[0] == "stage error":
+                return with_extra(StageError(outcome[1]), outcome[2])
+            if outcome:
+                return StageError("unexpected error in consistent-remesh: %s" % outcome[1])
+        if os.WIFSIGNALED(status):
+            how = "was killed by %s" % _signal_description(os.WTERMSIG(status))
+        elif os.WIFEXITED(status):
+            how = "exited with status %d" % os.WEXITSTATUS(status)
+        else:
+            how = "ended with wait status %d" % status
+        return StageError("crashed while %s: the process doing it %s" % (self.doing, how))
+
+
+# How often a process that shares its tasks with other MPI ranks lets MPI
+# serve their claims while its children run (seconds).
+POLL_SECONDS = 0.05
+
+
+def run_children(tasks, jobs=1, claim=None, poll=None):
+    """Runs each task (stage, name, function, doing, timeout) as
+    run_in_child does, up to `jobs` children at once, and returns one
+    outcome per task, in the tasks' order: the function's result, or the
+    StageError that run_in_child would raise (an exception object, not
+    raised). Each task's function runs in a child forked when the task
+    starts, so it sees what the parent had then; the outcomes do not depend
+    on `jobs`.
+
+    With `claim`, the tasks are shared with other processes: claim() gives
+    the index of the next task to run here (an index past the last: none
+    left), and the outcomes of the tasks run elsewhere are NOT_RUN.
+    `poll()`, if given, is called every POLL_SECONDS while children run."""
+    outcomes = [NOT_RUN] * len(tasks)
+    order = iter(range(len(tasks)))
+    running = {}  # _Child -> task index
+    left = True
+    while True:
+        while left and len(running) < max(1, jobs):
+            index = next(order, None) if claim is None else claim()
+            if index is None or index >= len(tasks):
+                left = False
+                break
+            running[_Child(*tasks[index])] = index
+        if not running:
+            return outcomes
+        deadlines = [child.deadline for child in running if child.deadline is not None]
+        wait = max(0.0, min(deadlines) - time.monotonic()) if deadlines else None
+        if poll is not None:
+            wait = POLL_SECONDS if wait is None else min(wait, POLL_SECONDS)
+        ready, _, _ = select.select(list(running), [], [], wait)
+        for child in ready:
+            if child.read_some():
+                outcomes[running.pop(child)] = child.outcome()
+        now = time.monotonic()
+        for child in [c for c in running if c.deadline is not None and c.deadline <= now]:
+            outcomes[running.pop(child)] = child.kill()
+        if poll is not None:
+            poll()
 
 
 def run_in_child(stage, name, function, doing, timeout=0):
@@ -127,69 +228,52 @@ def run_in_child(stage, name, function, doing, timeout=0):
     while DOING: ..." saying how, and one still running after `timeout`
     seconds (0: no limit) is killed and raises "timed out after N s while
     DOING". `stage` and `name` are for CMP_TEST_CRASH."""
-    sys.stdout.flush()
-    sys.stderr.flush()
-    read_end, write_end = os.pipe()
-    pid = os.fork()
-    if pid == 0:
-        os.close(read_end)
-        _child(write_end, stage, name, function)
-    os.close(write_end)
-    data = _read_until(read_end, time.monotonic() + timeout if timeout > 0 else None)
-    if data is None:
-        os.kill(pid, signal.SIGKILL)
-        os.waitpid(pid, 0)
-        raise StageError("timed out after %g s while %s: the process doing it was killed (--model-timeout)"
-                         % (timeout, doing))
-    _, status = os.waitpid(pid, 0)
-    if data:
-        try:
-            outcome = pickle.loads(data)
-        except Exception:
-            outcome = None
-        if outcome and outcome[0] == "ok":
-            return outcome[1]
-        if outcome and outcome[0] == "stage error":
-            raise with_extra(StageError(outcome[1]), outcome[2])
-        if outcome:
-            raise StageError("unexpected error in consistent-remesh: %s" % outcome[1])
-    if os.WIFSIGNALED(status):
-        how = "was killed by %s" % _signal_description(os.WTERMSIG(status))
-    elif os.WIFEXITED(status):
-        how = "exited with status %d" % os.WEXITSTATUS(status)
-    else:
-        how = "ended with wait status %d" % status
-    raise StageError("crashed while %s: the process doing it %s" % (doing, how))
+    outcome = run_children([(stage, name, function, doing, timeout)])[0]
+    if isinstance(outcome, StageError):
+        raise outcome
+    return outcome
 
 
 # What a model's stage does, for the message of a crash.
 MODEL_STAGES = {"read": "reading and checking its files", "process": "tracing and straightening its net"}
 
 
-def run_model_stage(model, stage, function, surfaces, timeout=0):
-    """`function()`, one stage of `model` (a stages.Model), in a child
-    process: afterwards model.report and the Model attributes named in
-    `surfaces` ("surface", "parameterized", "curves") are what the child
-    left them. `stage` is a key of MODEL_STAGES; `timeout` as for
-    run_in_child. Raises StageError if the stage failed, the child crashed
-    or timed out; model.report then keeps the figures the child had written
+def run_model_stages(stages, jobs=1, timeout=0, claim=None, poll=None):
+    """Runs one stage of each of several models, each in a child process,
+    up to `jobs` at once: `stages` holds (model, stage, function, surfaces),
+    with `model` a stages.Model, `stage` a key of MODEL_STAGES, `function()`
+    the stage's work and `surfaces` the Model attributes it sets
+    ("surface", "parameterized", "curves"); `timeout` as for run_in_child,
+    `claim` and `poll` as for run_children. Afterwards the report and those
+    attributes of each model whose stage ran here are what its child left
+    them. Returns {index in `stages`: None, or the StageError (not raised)
+    if the stage failed, its child crashed or timed out} for the stages run
+    here; the model's report then keeps the figures the child had written
     before a StageError."""
-    def child():
-        try:
-            function()
-        except StageError as error:
-            raise with_extra(error, model.report)
-        return model.report, [polydata_to_text(getattr(model, attribute)) for attribute in surfaces]
+    def task(model, stage, function, surfaces):
+        def child():
+            try:
+                function()
+            except StageError as error:
+                raise with_extra(error, model.report)
+            return model.report, [polydata_to_text(getattr(model, attribute)) for attribute in surfaces]
+        return (stage, model.name, child, MODEL_STAGES[stage], timeout)
 
-    try:
-        report, texts = run_in_child(stage, model.name, child, MODEL_STAGES[stage], timeout)
-    except StageError as error:
-        if getattr(error, "extra", None) is not None:
-            model.report = error.extra
-        raise
-    model.report = report
-    for attribute, text in zip(surfaces, texts):
-        setattr(model, attribute, polydata_from_text(text))
+    outcomes = run_children([task(*entry) for entry in stages], jobs, claim, poll)
+    errors = {}
+    for index, ((model, _, _, surfaces), outcome) in enumerate(zip(stages, outcomes)):
+        if outcome is NOT_RUN:
+            continue
+        if isinstance(outcome, StageError):
+            if getattr(outcome, "extra", None) is not None:
+                model.report = outcome.extra
+            errors[index] = outcome
+            continue
+        model.report, texts = outcome
+        for attribute, text in zip(surfaces, texts):
+            setattr(model, attribute, polydata_from_text(text))
+        errors[index] = None
+    return errors
 
 
 def with_extra(error, extra):

@@ -1,11 +1,11 @@
 """Tests of the consistent-remesh command, run as a user would run it.
 
   pvpython TestCLI.py --command <build>/bin/consistent-remesh [--data DATA]
-                     [--pictures [--keep-pictures DIR]] CASE
+                     [--mpiexec MPIEXEC] [--pictures [--keep-pictures DIR]] CASE
 
 CASE is one of: shipped-examples, collection, given-base-domain,
-failure-isolation, crash-isolation, model-timeout, reproducible-files,
-argument-errors, base-domain-mismatch, cut-along-the-map. Every case but
+failure-isolation, crash-isolation, models-in-parallel (needs --mpiexec),
+model-timeout, reproducible-files, argument-errors, base-domain-mismatch, cut-along-the-map. Every case but
 argument-errors, shipped-examples and cut-along-the-map needs the shared
 data (those two take the project's Data folder; cut-along-the-map remeshes
 two of its CGAL quadrupeds, from libcgal-demo). Each run writes into a fresh temporary
@@ -51,24 +51,30 @@ from cmp_test_support import (
 )
 
 COMMAND = None
+MPIEXEC = None
 DATA = None
 PICTURES = False
 KEEP_PICTURES = None
 
 
-def run_cli(arguments, output=None, display=None, environment=None, folder=None):
+def run_cli(arguments, output=None, display=None, environment=None, folder=None, launcher=()):
     """Runs consistent-remesh; returns (exit status, stdout, stderr, report
     or None). The command must find its Python package by itself, so
     PYTHONPATH is not passed on. `display`: None keeps this process's
     DISPLAY, "" unsets it, anything else replaces it. `environment`: more
-    variables. `folder`: the working folder."""
+    variables. `folder`: the working folder. `launcher`: words before the
+    command (mpiexec -np 2)."""
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PV_PLUGIN_PATH")}
+    if launcher:
+        # pvpython, which runs the tests, is a singleton MPI process: an
+        # mpiexec started with its variables fails without a word.
+        env = {k: v for k, v in env.items() if not k.startswith(("OMPI_", "PMIX_", "PMI_", "OPAL_"))}
     env.update(environment or {})
     if display is not None:
         env.pop("DISPLAY", None)
         if display:
             env["DISPLAY"] = display
-    command = [COMMAND] + list(arguments) + (["--output", output] if output else [])
+    command = list(launcher) + [COMMAND] + list(arguments) + (["--output", output] if output else [])
     # 300 s per run on an idle machine, scaled as ctest scales the test's
     # own timeout: beside other builds the 11-model collection took longer.
     result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -1271,6 +1277,62 @@ def case_reproducible_files(tmp):
     check(not [n for n in names if n.endswith("Seconds")], "timing field arrays in 381.remesh.vtp: %s" % names)
 
 
+def case_models_in_parallel(tmp):
+    """Issue 28: the models run at once, in child processes (--jobs) or
+    over MPI ranks (mpiexec -np 2 consistent-remesh), give the files of one
+    process running one model at a time, byte for byte but for
+    timings.json; a model that crashes on either rank fails alone, the
+    others are remeshed and rank 0 writes the report."""
+    import filecmp
+
+    pairs = [(shrec(name, "off"), shrec(name, "vts")) for name in ("381", "391", "382", "384")]
+    arguments = model_arguments(pairs) + ["--base-domain-from", "0", "--level", "2", "--no-render"]
+    # Model i is rank i mod 2's: 382's reading crashes on rank 0, 391's
+    # processing on rank 1.
+    crashes = {"CMP_TEST_CRASH": "read:382:SIGSEGV,process:391:SIGABRT"}
+    out = os.path.join(tmp, "out")  # the same --output every time: report.json has it
+    mpi = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
+           "OMPI_MCA_rmaps_base_oversubscribe": "1"}
+    runs = {}
+    for run, extra, launcher in (("one at a time", ["--jobs", "1"], ()),
+                                 ("two ranks", ["--jobs", "1"], (MPIEXEC, "-np", "2")),
+                                 ("three jobs", ["--jobs", "3"], ())):
+        status, stdout, stderr, report = run_cli(arguments + extra, out, environment=dict(crashes, **mpi),
+                                                 launcher=launcher)
+        check(report is not None, "%s: no report.json (status %d, stdout: %s, stderr: %s)" % (run, status, stdout[-2000:], stderr))
+        check_equal(status, 1, "%s: exit status with crashed models (stderr: %s)" % (run, stderr))
+        check_equal(sorted(report["failed"]), ["382", "391"], "%s: failed models" % run)
+        check_contains(report["models"]["382"].get("error", ""), "killed by SIGSEGV", "%s: error of 382" % run)
+        check_contains(report["models"]["391"].get("error", ""), "killed by SIGABRT", "%s: error of 391" % run)
+        check_remeshed(out, report, stdout, ["381", "384"], 2)
+        check_equal(stdout.count("remeshing 2 models"), 1, "%s: the collection remeshed once" % run)
+        kept = os.path.join(tmp, run.replace(" ", "-"))
+        os.rename(out, kept)
+        runs[run] = kept
+
+    def files(folder):
+        return sorted(os.path.relpath(os.path.join(root, name), folder)
+                      for root, _, names in os.walk(folder) for name in names)
+
+    first = runs["one at a time"]
+    for run in ("two ranks", "three jobs"):
+        check_equal(files(runs[run]), files(first), "the files written by %s and by one model at a time" % run)
+        # --jobs 3 is in the command that the reports quote.
+        quoting = ("report.json", "report.md", "report.html") if run == "three jobs" else ()
+        differing = [name for name in files(first) if name != "timings.json" and name not in quoting
+                     and not filecmp.cmp(os.path.join(first, name), os.path.join(runs[run], name), shallow=False)]
+        check_equal(differing, [], "files that differ between %s and one model at a time" % run)
+    reports = []
+    for folder in (first, runs["three jobs"]):
+        with open(os.path.join(folder, "report.json")) as f:
+            reports.append({key: value for key, value in json.load(f).items() if key != "command"})
+    check(reports[0] == reports[1], "report.json of --jobs 3 differs from --jobs 1 beyond the command")
+
+    status, _, stderr, _ = run_cli(arguments + ["--jobs", "0"], os.path.join(tmp, "out-bad"))
+    check_equal(status, 2, "exit status of --jobs 0")
+    check_contains(stderr, "--jobs 0", "usage error")
+
+
 def check_stages_without_a_model(tmp, good, garbage):
     """With a model failed, PCA and the blend grid work on the models that
     were remeshed, two here: one mode, one row of blends. Weights given for
@@ -1658,6 +1720,7 @@ CASES = {
     "given-base-domain": case_given_base_domain,
     "failure-isolation": case_failure_isolation,
     "crash-isolation": case_crash_isolation,
+    "models-in-parallel": case_models_in_parallel,
     "model-timeout": case_model_timeout,
     "reproducible-files": case_reproducible_files,
     "lower-stretch": case_lower_stretch,
@@ -1671,15 +1734,19 @@ CASES = {
 
 
 def main():
-    global COMMAND, DATA, PICTURES, KEEP_PICTURES
+    global COMMAND, MPIEXEC, DATA, PICTURES, KEEP_PICTURES
     parser = argparse.ArgumentParser()
     parser.add_argument("--command", required=True)
     parser.add_argument("--data")
+    parser.add_argument("--mpiexec", help="the MPI launcher (models-in-parallel needs it)")
     parser.add_argument("--pictures", action="store_true", help="a display is there: the pictures must be made")
     parser.add_argument("--keep-pictures", metavar="DIR", help="copy the checked pictures to DIR")
     parser.add_argument("case", choices=sorted(CASES))
     args = parser.parse_args()
     COMMAND = args.command
+    MPIEXEC = args.mpiexec
+    if args.case == "models-in-parallel":
+        check(MPIEXEC and os.access(MPIEXEC, os.X_OK), "this case needs --mpiexec")
     DATA = args.data
     PICTURES = args.pictures
     KEEP_PICTURES = args.keep_pictures
