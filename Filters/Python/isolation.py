@@ -8,7 +8,9 @@ The child is forked from this process, so it starts with everything this
 process has (the models read so far, the base domain, the filters) and
 costs no start-up; it sends back its result pickled through a pipe, with
 surfaces as VTK XML text. VTK runs its Sequential SMP backend here and the
-core starts no threads, so a fork copies no thread that holds a lock.
+core's only threads (the remesh's) have ended when it returns, so a fork
+copies no thread that holds a lock. Several children may run at once
+(run_children's `jobs`).
 
 A child that has not finished after the timeout (consistent-remesh
 --model-timeout) is killed, and the stage fails with "timed out after N s".
