@@ -66,6 +66,11 @@ def parse_arguments(argv):
                         "edges (Net Straightener's FreeCurves, on by default): only the landmarks stay, and tails, "
                         "ears and horns get room fixed curves deny them; --no-free-curves keeps the paper's "
                         "straightened curves, several times faster but far from such parts")
+    parser.add_argument("--free-curves-max-triangles", type=int, metavar="N",
+                        help="free the curves only on surfaces of at most N triangles (Net Straightener's "
+                        "FreeCurvesMaximumTriangles, default 150000; 0: no limit): the whole-surface map takes its "
+                        "steps on every triangle, a 258K-triangle surface about 16 minutes on 2 cores; above N the "
+                        "straightened curves are kept and the report says why")
     parser.add_argument("--no-fold-repair", action="store_true",
                         help="keep every remesh vertex exactly where its model's parameterization puts it (the "
                         "Semi-Regular Remesher's RepairFolds off): by default the vertices of remesh triangles "
@@ -122,6 +127,9 @@ def parse_arguments(argv):
         args.level = DEFAULT_LEVEL
     if not args.model_timeout >= 0:
         parser.error("--model-timeout %s: give a number of seconds, 0 or more (0: no limit)" % args.model_timeout)
+    if args.free_curves_max_triangles is not None and args.free_curves_max_triangles < 0:
+        parser.error("--free-curves-max-triangles %d: give a number of triangles, 0 (no limit) or more"
+                     % args.free_curves_max_triangles)
     if args.jobs is not None and args.jobs < 1:
         parser.error("--jobs %d: give a number of models to run at once, 1 or more" % args.jobs)
     if args.relax_samples is None:

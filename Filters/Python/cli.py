@@ -132,7 +132,8 @@ def main(argv=None):
             traced = trace_net(model, domain, args.output)
             print("%s straightening the net (traced in %.2f s)" % (step, model.report["seconds"]["trace"]),
                   flush=True)
-            straighten_net(model, domain, traced, args.output, args.lower_stretch, args.free_curves)
+            straighten_net(model, domain, traced, args.output, args.lower_stretch, args.free_curves,
+                           args.free_curves_max_triangles)
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
         return (model, "process", process, ["parameterized", "curves"])
 

@@ -144,16 +144,21 @@ def trace_net(model, domain, output_folder):
     return surface
 
 
-def straighten_net(model, domain, traced, output_folder, lower_stretch=False, free_curves=True):
+def straighten_net(model, domain, traced, output_folder, lower_stretch=False, free_curves=True,
+                   free_curves_maximum_triangles=None):
     """NetStraightener on the tracer's surface: writes NAME.param.vtp (the
     re-triangulated surface with PatchId, BaseTriangle and BaseCoordinates)
     and NAME.straight-curves.vtp (the straightened curves). With
     lower_stretch, every patch's map is made less stretched (the filter's
     LowerStretch); with free_curves, the curves move where one map of the
-    whole surface puts them (FreeCurves)."""
+    whole surface puts them (FreeCurves), on surfaces of at most
+    free_curves_maximum_triangles triangles (None: the filter's default;
+    FreeCurvesMaximumTriangles)."""
     straightener = cmp.vtkCMPNetStraightener()
     straightener.SetLowerStretch(lower_stretch)
     straightener.SetFreeCurves(free_curves)
+    if free_curves_maximum_triangles is not None:
+        straightener.SetFreeCurvesMaximumTriangles(free_curves_maximum_triangles)
     surface, value = _run_net_filter(model, "straighten", straightener, traced, domain,
                                      output_folder, ".param.vtp", ".straight-curves.vtp")
     model.report["straighten"] = {

@@ -151,6 +151,7 @@ int vtkCMPNetStraightener::RequestData(
   options.patches.lowerStretch = this->LowerStretch;
   options.freeCurves = this->FreeCurves;
   options.map.maximumIterations = this->MapIterations;
+  options.freeCurvesMaximumTriangles = this->FreeCurvesMaximumTriangles;
   options.progress = [this](double fraction) { this->UpdateProgress(0.8 * fraction); };
   if (const cmp::Status problem = cmp::checkStraightenOptions(options); !problem.ok())
   {
@@ -250,4 +251,5 @@ void vtkCMPNetStraightener::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LowerStretch: " << this->LowerStretch << "\n";
   os << indent << "FreeCurves: " << this->FreeCurves << "\n";
   os << indent << "MapIterations: " << this->MapIterations << "\n";
+  os << indent << "FreeCurvesMaximumTriangles: " << this->FreeCurvesMaximumTriangles << "\n";
 }

@@ -108,6 +108,16 @@ public:
   /// \brief Newton steps of the whole-surface map at most.
   vtkGetMacro(MapIterations, int);
 
+  /// \brief With FreeCurves, the most triangles the traced surface may have
+  ///        for its curves to be freed (default 150000; 0: no limit). The
+  ///        whole-surface map's time grows faster than the surface (a
+  ///        258K-triangle surface took 16 minutes): above the limit the
+  ///        straightened curves are kept, with a warning and the reason in
+  ///        Field Data FreeCurvesReason.
+  vtkSetMacro(FreeCurvesMaximumTriangles, int);
+  /// \brief The most triangles for FreeCurves (0: no limit).
+  vtkGetMacro(FreeCurvesMaximumTriangles, int);
+
 protected:
   vtkCMPNetStraightener();
   ~vtkCMPNetStraightener() override = default;
@@ -124,4 +134,5 @@ private:
   bool LowerStretch = false;
   bool FreeCurves = true;
   int MapIterations = 100;
+  int FreeCurvesMaximumTriangles = 150000;
 };

@@ -241,6 +241,52 @@ TEST(GlobalMap, FreeCurvesMoveTheCurvesOfModelsWhoseL0HasLandmarksOfHighAndLowVa
   }
 }
 
+TEST(GlobalMap, SurfacesAboveTheTriangleLimitKeepTheirStraightenedCurves)
+{
+  // 391 against its own L0: with a limit below its traced triangle count
+  // the map is not run, the straightened net is the result, and the report
+  // says why; with the limit at the count the curves are freed; a negative
+  // limit is refused.
+  CMP_REQUIRE_SHARED_DATA();
+  const test::LandmarkedModel model = test::landmarkedRealModel("391");
+  BaseDomain domain;
+  ASSERT_TRUE(buildBaseDomain(model.data.mesh, model.landmarks, domain).ok());
+  TracedNet traced;
+  ASSERT_TRUE(traceFeatureNet(model.data.mesh, model.landmarks, domain, traced).ok());
+  const int triangles = traced.mesh.triangleCount();
+
+  StraightenOptions fixed;
+  fixed.freeCurves = false;
+  StraightenedNet straight;
+  PatchParameterization straightMap;
+  ASSERT_TRUE(straighten(traced, domain, straight, straightMap, fixed).ok());
+
+  StraightenOptions limited;
+  limited.freeCurvesMaximumTriangles = triangles - 1;
+  StraightenedNet kept;
+  PatchParameterization keptMap;
+  StraightenReport report;
+  ASSERT_TRUE(straighten(traced, domain, kept, keptMap, limited, &report).ok());
+  EXPECT_FALSE(report.freeCurves.applied);
+  EXPECT_NE(report.freeCurves.reason.find("FreeCurvesMaximumTriangles (" + std::to_string(triangles - 1) + ")"),
+    std::string::npos) << report.freeCurves.reason;
+  EXPECT_NE(report.freeCurves.reason.find(std::to_string(triangles) + " triangles"), std::string::npos);
+  EXPECT_EQ(report.freeCurves.map.iterations, 0);
+  EXPECT_EQ(kept.net.mesh.points(), straight.net.mesh.points());
+  ASSERT_EQ(kept.net.mesh.triangleCount(), straight.net.mesh.triangleCount());
+  for (int t = 0; t < kept.net.mesh.triangleCount(); ++t)
+    ASSERT_EQ(kept.net.mesh.triangle(t), straight.net.mesh.triangle(t)) << "triangle " << t;
+
+  limited.freeCurvesMaximumTriangles = triangles;
+  ASSERT_TRUE(straighten(traced, domain, kept, keptMap, limited, &report).ok());
+  EXPECT_TRUE(report.freeCurves.applied) << report.freeCurves.reason;
+
+  limited.freeCurvesMaximumTriangles = -1;
+  const Status refused = straighten(traced, domain, kept, keptMap, limited);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("FreeCurvesMaximumTriangles must be 0"), std::string::npos) << refused.message();
+}
+
 TEST(GlobalMap, WeighingTheEnergyNearLandmarksKeepsTheirRingsFromBeingPinched)
 {
   // Landmarks are pinned: unweighted, the map squeezes some landmark's ring

@@ -20,6 +20,9 @@ Status checkStraightenOptions(const StraightenOptions& options)
     problem << "SnapTolerance must be at least 0 and below 0.5 (it is " << net.snapTolerance << ")";
   else if (options.freeCurves && options.map.maximumIterations < 0)
     problem << "MapIterations must be 0 or more (it is " << options.map.maximumIterations << ")";
+  else if (options.freeCurvesMaximumTriangles < 0)
+    problem << "FreeCurvesMaximumTriangles must be 0 (no limit) or more (it is "
+            << options.freeCurvesMaximumTriangles << ")";
   if (!problem.str().empty())
     return Status::error(problem.str());
   return options.freeCurves ? checkGlobalMapOptions(options.map) : Status{};
@@ -51,7 +54,19 @@ Status straighten(const TracedNet& traced, const BaseDomain& domain, Straightene
     status = parameterizePatches(straight.net, domain, parameterization, options.patches);
     r.parameterizeSeconds = since(part);
   }
-  if (status.ok() && options.freeCurves)
+  const bool tooLarge = options.freeCurvesMaximumTriangles > 0 &&
+    traced.mesh.triangleCount() > options.freeCurvesMaximumTriangles;
+  if (status.ok() && options.freeCurves && tooLarge)
+  {
+    std::ostringstream reason;
+    reason << "the surface has " << traced.mesh.triangleCount() << " triangles, more than FreeCurvesMaximumTriangles ("
+           << options.freeCurvesMaximumTriangles
+           << "): the whole-surface map would take its Newton steps on all of them, for many minutes; raise the "
+              "limit (0: none) to free the curves anyway, or simplify the surface";
+    r.freeCurves.applied = false;
+    r.freeCurves.reason = reason.str();
+  }
+  else if (status.ok() && options.freeCurves)
   {
     part = Clock::now();
     StraightenedNet moved;

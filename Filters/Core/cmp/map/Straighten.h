@@ -35,6 +35,13 @@ struct StraightenOptions
   ///        layout equivalent to L0, the straightened net is kept and the
   ///        report says why.
   bool freeCurves = true;
+  /// \brief With `freeCurves`, the most triangles a traced surface may have
+  ///        for its curves to be freed (0: no limit). The map takes its
+  ///        Newton steps on the whole surface, each one sparse
+  ///        factorization, and its time grows faster than the surface
+  ///        (Documentation/known-issues.md, "Large surfaces"): above the
+  ///        limit the straightened curves are kept and the report says why.
+  int freeCurvesMaximumTriangles = 150000;
   /// \brief The whole-surface map's options, with `freeCurves`.
   GlobalMapOptions map;
   /// \brief Called with the fraction (0 to 1) of the straightening done, if set.
@@ -43,7 +50,8 @@ struct StraightenOptions
 
 /// \brief Checks the options `straighten()` checks first. The messages name
 ///        the options as the Net Straightener's properties do
-///        (`MaximumSweeps`, `Tolerance`, `SnapTolerance`, `MapIterations`), so
+///        (`MaximumSweeps`, `Tolerance`, `SnapTolerance`, `MapIterations`,
+///        `FreeCurvesMaximumTriangles`), so
 ///        that a filter can pass them on as they are; the map's options only
 ///        with `freeCurves` (`checkGlobalMapOptions()`).
 Status checkStraightenOptions(const StraightenOptions& options);
@@ -81,8 +89,10 @@ struct StraightenReport
 /// (`checkStraightenOptions()`) and where a part fails (`straightenNet()`:
 /// a net that does not belong to `domain`; `parameterizePatches()`;
 /// `freeCurves()`: sizes that disagree or a flipped starting map). Curves
-/// that cannot be freed are not a failure: `report->freeCurves.applied` is
-/// false, with the reason, and `out` is the straightened net. `out` and
+/// that cannot be freed, or are not because the surface has more than
+/// `options.freeCurvesMaximumTriangles`, are not a failure:
+/// `report->freeCurves.applied` is false, with the reason, and `out` is the
+/// straightened net. `out` and
 /// `map` are complete only on success.
 Status straighten(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out, PatchParameterization& map,
   const StraightenOptions& options = {}, StraightenReport* report = nullptr);
