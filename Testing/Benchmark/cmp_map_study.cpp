@@ -10,7 +10,7 @@
 ///
 ///   cmp_map_study --data DIR [--l0 MODEL|FILE.obj] [--level 5]
 ///                 [--relax 4] [--models 381,382,...] [--fixed-curves]
-///                 [--sweeps N] [--map-iterations N] [--map-gain G] [--density C]
+///                 [--sweeps N] [--map-iterations N] [--map-gain G] [--density C] [--targets equilateral|l0]
 ///                 [--no-repair] [--details] [--write DIR]
 ///
 /// One line per model, then the largest and median distance and the summed
@@ -138,6 +138,7 @@ int main(int argc, char** argv)
   int mapIterations = -1;
   double mapGain = -1.0;
   double density = -1.0;
+  std::string targets = "equilateral";
   std::string writeDir;
   std::vector<std::string> names{ "381", "382", "383", "384", "385", "387", "388", "389", "391", "392", "spot" };
   for (int i = 1; i < argc; ++i)
@@ -175,12 +176,14 @@ int main(int argc, char** argv)
       mapGain = std::stod(value());
     else if (arg == "--density")
       density = std::stod(value());
+    else if (arg == "--targets")
+      targets = value();
     else if (arg == "--fixed-curves")
       fixedCurves = true;
     else
     {
       std::cerr << "usage: cmp_map_study --data DIR [--l0 MODEL|FILE.obj] [--level 5] [--relax 4] "
-                   "[--models A,B,...] [--fixed-curves] [--sweeps N] [--map-iterations N] [--map-gain G] [--density C] "
+                   "[--models A,B,...] [--fixed-curves] [--sweeps N] [--map-iterations N] [--map-gain G] [--density C] [--targets equilateral|l0] "
                    "[--no-repair] [--details] [--write DIR]\n";
       return 2;
     }
@@ -257,6 +260,8 @@ int main(int argc, char** argv)
     options.map.leastRelativeGain = mapGain;
   if (density >= 0.0)
     options.map.curvatureDensity = density;
+  if (targets == "l0")
+    options.map.targetShapes = cmp::GlobalMapOptions::TargetShapes::BaseDomain;
   std::vector<cmp::RemeshModel> remeshModels;
   std::vector<Model*> placed;
   for (auto& model : models)

@@ -46,15 +46,54 @@ Vec2 apex(const Vec2& p, const Vec2& q, double dp, double dq)
   return p + x * u + h * Vec2(-u.y(), u.x());
 }
 
-/// L0 drawn with equilateral triangles of one side: each triangle unfolded
-/// beside its neighbours, and straight walks across them.
+/// The sides of L0's triangles drawn with `shapes` and `area` in all:
+/// `lengths[t][k]` the side between corners k and k + 1 of triangle t.
+Status targetSides(const BaseDomain& domain, double area, GlobalMapOptions::TargetShapes shapes,
+  std::vector<std::array<double, 3>>& lengths)
+{
+  const int count = domain.mesh.triangleCount();
+  lengths.assign(count, { { 0.0, 0.0, 0.0 } });
+  if (shapes == GlobalMapOptions::TargetShapes::Equilateral)
+  {
+    const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * count));
+    for (auto& l : lengths)
+      l = { { side, side, side } };
+    return {};
+  }
+  double own = 0.0;
+  for (int t = 0; t < count; ++t)
+  {
+    const Triangle& tri = domain.mesh.triangles[t];
+    const Vec3 a = domain.mesh.points[tri[0]], b = domain.mesh.points[tri[1]], c = domain.mesh.points[tri[2]];
+    const double twice = (b - a).cross(c - a).norm();
+    const double longest = std::max({ (b - a).norm(), (c - b).norm(), (a - c).norm() });
+    if (!(twice > 1e-6 * longest * longest))
+      return Status::error("global map: triangle " + std::to_string(t) +
+        " of L0 is too thin to draw its own shape (TargetShapes: use equilateral)");
+    own += 0.5 * twice;
+    for (int k = 0; k < 3; ++k)
+      lengths[t][k] = (domain.mesh.points[tri[(k + 1) % 3]] - domain.mesh.points[tri[k]]).norm();
+  }
+  const double scale = std::sqrt(area / own);
+  for (auto& l : lengths)
+    for (double& side : l)
+      side *= scale;
+  return {};
+}
+
+/// L0 drawn flat triangle by triangle (`targetSides()`): each triangle
+/// unfolded beside its neighbours, and straight walks across them.
 class DomainGeometry
 {
 public:
-  Status build(const BaseDomain& domain, double side)
+  /// `lengths[t][k]`: the side of triangle t between its corners k and
+  /// k + 1 (equal on both triangles of an edge).
+  Status build(const BaseDomain& domain, std::vector<std::array<double, 3>> lengths)
   {
-    side_ = side;
+    length_ = std::move(lengths);
     const int count = domain.mesh.triangleCount();
+    if (static_cast<int>(length_.size()) != count)
+      return Status::error("global map: one length per side of L0's triangles is needed");
     const int vertices = domain.mesh.vertexCount();
     neighbour_.assign(count, { { -1, -1, -1 } });
     neighbourEdge_.assign(count, { { -1, -1, -1 } });
@@ -78,11 +117,12 @@ public:
     return {};
   }
 
-  /// A triangle drawn on its own: corner 0 at the origin, corner 1 on the
+  /// Triangle `t` drawn on its own: corner 0 at the origin, corner 1 on the
   /// x axis.
-  Drawing canonical() const
+  Drawing canonical(int t) const
   {
-    return { Vec2(0.0, 0.0), Vec2(side_, 0.0), apex(Vec2(0.0, 0.0), Vec2(side_, 0.0), side_, side_) };
+    const std::array<double, 3>& l = length_[t];
+    return { Vec2(0.0, 0.0), Vec2(l[0], 0.0), apex(Vec2(0.0, 0.0), Vec2(l[0], 0.0), l[2], l[1]) };
   }
 
   /// The triangle across edge k (corners k, k + 1) of `t`, drawn `drawing`,
@@ -94,7 +134,7 @@ public:
     Drawing out;
     out[j] = drawing[(k + 1) % 3];
     out[(j + 1) % 3] = drawing[k];
-    out[(j + 2) % 3] = apex(out[j], out[(j + 1) % 3], side_, side_);
+    out[(j + 2) % 3] = apex(out[j], out[(j + 1) % 3], length_[result][(j + 2) % 3], length_[result][(j + 1) % 3]);
     return out;
   }
 
@@ -139,7 +179,7 @@ public:
   }
 
 private:
-  double side_ = 1.0;
+  std::vector<std::array<double, 3>> length_;
   std::vector<std::array<int, 3>> neighbour_;
   std::vector<std::array<int, 3>> neighbourEdge_;
 };
@@ -369,7 +409,10 @@ public:
     if (options.curvatureDensity > 0.0)
       inflateCurvedParts(options.curvatureDensity, options.curvatureDensityCap);
 
-    if (Status s = geometry_.build(domain, side_); !s.ok())
+    std::vector<std::array<double, 3>> lengths;
+    if (Status s = targetSides(domain, totalArea_, options.targetShapes, lengths); !s.ok())
+      return s;
+    if (Status s = geometry_.build(domain, std::move(lengths)); !s.ok())
       return s;
 
     // A spanning tree of L0's vertices: its curves cut the surface into a
@@ -404,7 +447,7 @@ public:
     drawing_.assign(baseTriangles, Drawing{});
     std::vector<char> drawn(baseTriangles, 0);
     drawn[0] = 1;
-    drawing_[0] = geometry_.canonical();
+    drawing_[0] = geometry_.canonical(0);
     queue.assign(1, 0);
     for (std::size_t i = 0; i < queue.size(); ++i)
     {

@@ -53,6 +53,18 @@ struct GlobalMapOptions
   double curvatureDensity = 1.0;
   /// \brief The largest inflation s^2 above.
   double curvatureDensityCap = 16.0;
+  /// \brief The shapes the map's base triangles are drawn with, the same
+  ///        for every model of a collection, scaled to the surface's
+  ///        (inflated) area: `Equilateral`, all alike; `BaseDomain`, L0's own
+  ///        triangles (its vertex positions, the landmarks of the model it
+  ///        was built from), so that each patch is asked for its model's
+  ///        proportions.
+  enum class TargetShapes
+  {
+    Equilateral,
+    BaseDomain
+  };
+  TargetShapes targetShapes = TargetShapes::Equilateral;
 };
 
 /// \brief Checks `options`; the messages name the fields.
