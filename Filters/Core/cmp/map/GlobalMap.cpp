@@ -1278,6 +1278,27 @@ public:
       std::vector<int>& curve = out.net.curves[e];
       int v = net.landmarkVertex[net.baseEdges[e][0]], previous = -1;
       const int end = net.landmarkVertex[net.baseEdges[e][1]];
+      // A spur, edges that end short of a landmark (a vertex snapped onto
+      // the curve beside where it runs), is no part of the curve: pruned,
+      // its triangles are checked below like every other's.
+      std::vector<int> loose;
+      for (const auto& [k, around] : next)
+        if (around.size() == 1 && k != v && k != end)
+          loose.push_back(k);
+      while (!loose.empty())
+      {
+        const int k = loose.back();
+        loose.pop_back();
+        std::vector<int>& around = next[k];
+        if (around.size() != 1)
+          continue;
+        const int other = around.front();
+        around.clear();
+        std::vector<int>& back = next[other];
+        back.erase(std::remove(back.begin(), back.end(), k), back.end());
+        if (back.size() == 1 && other != v && other != end)
+          loose.push_back(other);
+      }
       curve.push_back(v);
       while (v != end)
       {
