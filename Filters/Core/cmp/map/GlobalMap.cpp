@@ -46,6 +46,12 @@ Vec2 apex(const Vec2& p, const Vec2& q, double dp, double dq)
   return p + x * u + h * Vec2(-u.y(), u.x());
 }
 
+/// The side of `triangles` equilateral triangles of `area` in all.
+double equilateralSide(double area, int triangles)
+{
+  return std::sqrt(4.0 * area / (std::sqrt(3.0) * triangles));
+}
+
 /// The sides of L0's triangles drawn with `shapes` and `area` in all:
 /// `lengths[t][k]` the side between corners k and k + 1 of triangle t.
 Status targetSides(const BaseDomain& domain, double area, GlobalMapOptions::TargetShapes shapes,
@@ -55,7 +61,7 @@ Status targetSides(const BaseDomain& domain, double area, GlobalMapOptions::Targ
   lengths.assign(count, { { 0.0, 0.0, 0.0 } });
   if (shapes == GlobalMapOptions::TargetShapes::Equilateral)
   {
-    const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * count));
+    const double side = equilateralSide(area, count);
     for (auto& l : lengths)
       l = { { side, side, side } };
     return {};
@@ -404,7 +410,7 @@ public:
     }
     if (!(totalArea_ > 0.0))
       return Status::error("global map: the surface has no area");
-    side_ = std::sqrt(4.0 * totalArea_ / (std::sqrt(3.0) * baseTriangles));
+    side_ = equilateralSide(totalArea_, baseTriangles);
     baseTriangles_ = baseTriangles;
     if (options.curvatureDensity > 0.0)
       inflateCurvedParts(options.curvatureDensity, options.curvatureDensityCap);
@@ -672,7 +678,7 @@ public:
       inverseEdges_[t] /= std::sqrt(inflation);
       totalArea_ += area_[t];
     }
-    side_ = std::sqrt(4.0 * totalArea_ / (std::sqrt(3.0) * baseTriangles_));
+    side_ = equilateralSide(totalArea_, baseTriangles_);
   }
 
   /// The base edge between base vertices `a` and `b`, -1 if none.
