@@ -19,8 +19,8 @@ import time
 
 
 # The variables by which Open MPI, MPICH (Hydra) and PMIx tell a process how
-# many ranks its job has.
-_SIZE_VARIABLES = ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS")
+# many ranks its job has, and how many of them share its machine.
+_SIZE_VARIABLES = ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE")
 _LOCAL_SIZE_VARIABLES = ("OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS", "PMI_LOCAL_SIZE")
 
 
@@ -31,12 +31,13 @@ class SingleProcess:
     size = 1
     local_size = 1
 
-    def owns(self, index):
-        """Whether model `index` is this rank's."""
-        return index % self.size == self.rank
-
     def owner(self, index):
+        """The rank that reads model `index`."""
         return index % self.size
+
+    def owns(self, index):
+        """Whether model `index` is this rank's to read."""
+        return self.owner(index) == self.rank
 
     def broadcast(self, value, root=0):
         """`value` of rank `root`, on every rank."""
