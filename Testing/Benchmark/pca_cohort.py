@@ -27,7 +27,6 @@ ranks: a check that the ranks made one collection).
 
 import argparse
 import math
-import os
 import resource
 import sys
 import time
@@ -135,7 +134,8 @@ def main():
         array = field.GetArray(name)
         return array.GetValue(0) if array is not None else float("nan")
 
-    ratio = mean.GetPointData().GetArray("Mode0")
+    if mean.GetPointData().GetArray("Mode0") is None:
+        raise SystemExit("no Mode0 array on the mean")
     ratios = field.GetArray("ExplainedVarianceRatio")
     first = ratios.GetValue(0) if ratios is not None else float("nan")
     row = ("| %d | %d | %d | %d | %.1f | %.1f | %d | %.0f | %.0f | %.4f |"
@@ -144,8 +144,6 @@ def main():
     print("| ranks | models | vertices | modes | seconds | filter s (rank 0) | alignment iterations "
           "| peak MB (largest rank) | peak MB (all ranks) | mode 0 variance ratio |")
     print(row, flush=True)
-    if ratio is None:
-        raise SystemExit("no Mode0 array on the mean")
     if args.output:
         with open(args.output, "a") as f:
             f.write(row + "\n")
