@@ -74,7 +74,7 @@ constexpr double kSameTextureCoordinates = 1e-5;
 /// triangle each corner sample lies in (a corner sample at a landmark has
 /// none: the landmark's first corner in the source is used then).
 std::vector<std::array<double, 2>> cornerTextureCoordinates(
-  const std::vector<cmp::SurfaceSample>& corners, vtkDataArray* sourceCorners, const cmp::TriangleMesh& source)
+  const std::vector<cmp::SurfacePoint>& corners, vtkDataArray* sourceCorners, const cmp::TriangleMesh& source)
 {
   std::vector<int> someTriangleOf(source.vertexCount(), -1);
   for (int t = 0; t < source.triangleCount(); ++t)
@@ -83,7 +83,7 @@ std::vector<std::array<double, 2>> cornerTextureCoordinates(
   std::vector<std::array<double, 2>> uv(corners.size(), { 0.0, 0.0 });
   for (std::size_t c = 0; c < corners.size(); ++c)
   {
-    const cmp::SurfaceSample& s = corners[c];
+    const cmp::SurfacePoint& s = corners[c];
     const int triangle = s.triangle >= 0 ? s.triangle : someTriangleOf[s.vertex[0]];
     for (int k = 0; k < 3; ++k)
     {
@@ -231,7 +231,7 @@ cmp::Status transferTo(vtkPolyData* target, const cmp::BaseDomain& domain, const
   if (cmp::Status s = mapped.prepare(); !s.ok())
     return s;
   const cmp::BaseDomainMesh where = cmp::bridge::toBaseDomainMesh(mapped);
-  std::vector<cmp::SurfaceSample> samples;
+  std::vector<cmp::SurfacePoint> samples;
   if (cmp::Status s = cmp::locateVertices(source.surface(), where, samples); !s.ok())
     return s;
   result->ShallowCopy(target);
@@ -256,7 +256,7 @@ cmp::Status transferTo(vtkPolyData* target, const cmp::BaseDomain& domain, const
   vtkDataArray* sourceCorners = source.input()->GetCellData()->GetArray(cmp::bridge::kCornerTCoordsArray);
   if (sourceCorners && sourceCorners->GetNumberOfComponents() == 6)
   {
-    std::vector<cmp::SurfaceSample> corners;
+    std::vector<cmp::SurfacePoint> corners;
     if (cmp::Status s = cmp::locateCorners(source.surface(), domain, where, corners); !s.ok())
       return s;
     seamPoints = addTextureCoordinates(

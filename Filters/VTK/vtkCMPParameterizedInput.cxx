@@ -150,13 +150,13 @@ BaseDomainMesh toBaseDomainMesh(const ParameterizedInput& input)
   const PatchParameterization& map = input.parameterization();
   target.locations.resize(map.baseTriangle.size());
   for (std::size_t v = 0; v < map.baseTriangle.size(); ++v)
-    target.locations[v] = { map.baseTriangle[v], map.baseCoordinates[v] };
+    target.locations[v] = SurfacePoint::inTriangle(input.domain().mesh, map.baseTriangle[v], map.baseCoordinates[v]);
   target.triangles = input.mesh().triangles;
   target.patchOfTriangle = input.patchIds();
   return target;
 }
 
-void sampleArrays(vtkDataSetAttributes* output, vtkDataSetAttributes* input, const std::vector<SurfaceSample>& samples,
+void sampleArrays(vtkDataSetAttributes* output, vtkDataSetAttributes* input, const std::vector<SurfacePoint>& samples,
   const std::vector<std::string>& skip)
 {
   const auto count = static_cast<vtkIdType>(samples.size());

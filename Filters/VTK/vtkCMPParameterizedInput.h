@@ -80,7 +80,7 @@ BaseDomainMesh toBaseDomainMesh(const ParameterizedInput& input);
 ///        other arrays copied from the sample's vertex of largest weight.
 ///        Attribute roles (normals, texture coordinates, scalars) are kept,
 ///        except global and pedigree ids, which copies would not keep unique.
-void sampleArrays(vtkDataSetAttributes* output, vtkDataSetAttributes* input, const std::vector<SurfaceSample>& samples,
+void sampleArrays(vtkDataSetAttributes* output, vtkDataSetAttributes* input, const std::vector<SurfacePoint>& samples,
   const std::vector<std::string>& skip);
 
 } // namespace cmp::bridge

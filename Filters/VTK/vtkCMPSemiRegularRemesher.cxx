@@ -109,11 +109,11 @@ struct SharedArrays
     const int vertices = mesh.vertexCount();
     cmp::TriangleMesh drawn;
     drawn.points.reserve(vertices);
-    for (const cmp::BaseLocation& at : mesh.locations)
+    for (const cmp::SurfacePoint& at : mesh.locations)
     {
       cmp::Vec3 p = cmp::Vec3::Zero();
       for (int k = 0; k < 3; ++k)
-        p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
+        p += at.weight[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
       drawn.points.push_back(p);
     }
     drawn.triangles = mesh.triangles;
@@ -134,7 +134,7 @@ struct SharedArrays
     for (int v = 0; v < vertices; ++v)
     {
       triangles[v] = mesh.locations[v].triangle;
-      baseCoordinates->SetTypedTuple(v, mesh.locations[v].coordinates.data());
+      baseCoordinates->SetTypedTuple(v, mesh.locations[v].weight.data());
     }
     baseTriangles = intArray(kBaseTriangleArray, triangles);
     featureIds.assign(vertices, -1);
@@ -172,7 +172,7 @@ struct SharedArrays
 
 /// Point data of one remesh: every input point array carried to the remesh
 /// vertices, FeatureId written anew, and the shared base-domain arrays.
-void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<cmp::SurfaceSample>& samples,
+void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<cmp::SurfacePoint>& samples,
   const SharedArrays& shared)
 {
   const auto vertices = static_cast<vtkIdType>(samples.size());

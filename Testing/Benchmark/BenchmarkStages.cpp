@@ -201,7 +201,7 @@ Status remeshAt(const ModelContext& ctx, const TracedNet& net, const PatchParame
 Status remeshStage(ModelContext& ctx)
 {
   ctx.remesh = SemiRegularMesh{};
-  ctx.remeshSamples = std::vector<SurfaceSample>();
+  ctx.remeshSamples = std::vector<SurfacePoint>();
   ctx.remeshPoints = std::vector<Vec3>();
   const int level = remeshLevel(ctx.spec);
   CollectionRemesh result;

@@ -91,7 +91,7 @@ struct ModelContext
   StraightenReport straightReport;        ///< `straighten` to `map`: lengths, area variation, sweeps, the map's figures.
   PatchParameterization parameterization; ///< `straighten` to `map`: base-domain place of every vertex.
   SemiRegularMesh remesh;                 ///< `remesh`: the semi-regular connectivity.
-  std::vector<SurfaceSample> remeshSamples; ///< `remesh`: where each remesh vertex lands on the surface.
+  std::vector<SurfacePoint> remeshSamples; ///< `remesh`: where each remesh vertex lands on the surface.
   std::vector<Vec3> remeshPoints;         ///< `remesh`: the positions of those places.
   // Later stages add their outputs here (PCA, ...).
   FigureList figures;                     ///< Per-model numbers the stages report.

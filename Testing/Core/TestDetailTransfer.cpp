@@ -212,7 +212,7 @@ TEST(DetailTransfer, DetailsOfARealModelOnTheCoarseShapeOfAnother)
     test::ParameterizedModel parameterized;
     const Status status = test::parameterizeOnDomain(*model, domain, parameterized);
     ASSERT_TRUE(status.ok()) << status.message();
-    std::vector<SurfaceSample> samples;
+    std::vector<SurfacePoint> samples;
     ASSERT_TRUE(placeOnSurface(remesh, parameterized.net, domain, parameterized.parameterization, samples).ok());
     positions.push_back(test::toMatrix(samplePositions(parameterized.net, samples)));
   }

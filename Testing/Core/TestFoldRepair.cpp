@@ -29,7 +29,7 @@ std::vector<int> neighboursOf(const SemiRegularMesh& remesh, int v)
 /// Samples, positions and folds of a remesh placed on a parameterized model.
 struct Placed
 {
-  std::vector<SurfaceSample> samples;
+  std::vector<SurfacePoint> samples;
   std::vector<Vec3> positions;
 };
 
@@ -43,7 +43,7 @@ Placed place(const SemiRegularMesh& remesh, const BaseDomain& domain, const test
 
 /// Puts the last remesh vertex where the vertex beyond its first
 /// neighbour is, so its triangles on that side fold over; returns it.
-int tangleLastVertex(const SemiRegularMesh& remesh, const Placed& placed, std::vector<SurfaceSample>& samples)
+int tangleLastVertex(const SemiRegularMesh& remesh, const Placed& placed, std::vector<SurfacePoint>& samples)
 {
   const int v = remesh.vertexCount() - 1, w = neighboursOf(remesh, v).front();
   const Vec3 away = (placed.positions[w] - placed.positions[v]).normalized();
@@ -72,9 +72,9 @@ TEST(FoldRepair, UnfoldsAVertexPushedAcrossItsNeighbourWithinReach)
   Placed placed = place(remesh, domain, model);
   ASSERT_EQ(countFoldedTriangles(remesh, model.net.mesh, placed.samples), 0);
 
-  std::vector<SurfaceSample> samples = placed.samples;
+  std::vector<SurfacePoint> samples = placed.samples;
   const int v = tangleLastVertex(remesh, placed, samples);
-  const std::vector<SurfaceSample> tangled = samples;
+  const std::vector<SurfacePoint> tangled = samples;
   const int folded = countFoldedTriangles(remesh, model.net.mesh, samples);
   ASSERT_GT(folded, 0);
 
@@ -110,9 +110,9 @@ TEST(FoldRepair, RefusesSamplesThatDoNotFitTheRemesh)
   ASSERT_TRUE(buildSemiRegularMesh(domain, 1, remesh).ok());
   Placed placed = place(remesh, domain, model);
 
-  std::vector<SurfaceSample> fewer(placed.samples.begin(), placed.samples.end() - 1);
+  std::vector<SurfacePoint> fewer(placed.samples.begin(), placed.samples.end() - 1);
   EXPECT_NE(repairFolds(remesh, model.net.mesh, fewer).message().find("samples for a remesh of"), std::string::npos);
-  std::vector<SurfaceSample> stray = placed.samples;
+  std::vector<SurfacePoint> stray = placed.samples;
   stray.back().triangle = model.net.mesh.triangleCount();
   EXPECT_NE(repairFolds(remesh, model.net.mesh, stray).message().find("names surface triangle"), std::string::npos);
   FoldRepairOptions negative;
@@ -127,12 +127,12 @@ TEST(FoldRepair, RefusesSamplesThatDoNotFitTheRemesh)
     std::string::npos);
 
   const int v = remesh.vertexCount() - 1;
-  const auto refused = [&](std::vector<SurfaceSample> samples, const std::string& fragment)
+  const auto refused = [&](std::vector<SurfacePoint> samples, const std::string& fragment)
   {
     const Status status = repairFolds(remesh, model.net.mesh, samples);
     EXPECT_NE(status.message().find(fragment), std::string::npos) << status.message();
   };
-  std::vector<SurfaceSample> broken = placed.samples;
+  std::vector<SurfacePoint> broken = placed.samples;
   broken[v].triangle = -2;
   refused(broken, "names surface triangle -2");
   broken = placed.samples;
@@ -171,7 +171,7 @@ TEST(FoldRepair, LeavesAnUnfoldedRemeshAndAReachOfZeroAlone)
     SemiRegularMesh remesh;
     ASSERT_TRUE(buildSemiRegularMesh(domain, level, remesh).ok());
     Placed placed = place(remesh, domain, model);
-    std::vector<SurfaceSample> samples = placed.samples;
+    std::vector<SurfacePoint> samples = placed.samples;
     FoldRepairReport report;
     ASSERT_TRUE(repairFolds(remesh, model.net.mesh, samples, {}, &report).ok());
     EXPECT_EQ(report.foldedBefore, 0) << level;
@@ -183,9 +183,9 @@ TEST(FoldRepair, LeavesAnUnfoldedRemeshAndAReachOfZeroAlone)
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 3, remesh).ok());
   Placed placed = place(remesh, domain, model);
-  std::vector<SurfaceSample> samples = placed.samples;
+  std::vector<SurfacePoint> samples = placed.samples;
   tangleLastVertex(remesh, placed, samples);
-  const std::vector<SurfaceSample> tangled = samples;
+  const std::vector<SurfacePoint> tangled = samples;
   FoldRepairOptions still;
   still.reach = 0.0;
   FoldRepairReport report;
@@ -212,7 +212,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     test::ParameterizedModel parameterized;
     ASSERT_TRUE(test::parameterizeOnDomain(model, domain, parameterized).ok()) << name;
     Placed placed = place(remesh, domain, parameterized);
-    std::vector<SurfaceSample> samples = placed.samples;
+    std::vector<SurfacePoint> samples = placed.samples;
     FoldRepairReport report;
     ASSERT_TRUE(repairFolds(remesh, parameterized.net.mesh, samples, {}, &report).ok()) << name;
     EXPECT_EQ(report.foldedBefore, countFoldedTriangles(remesh, parameterized.net.mesh, placed.samples)) << name;
@@ -247,7 +247,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     for (int v = 0; v < remesh.vertexCount(); ++v)
     {
       largest = std::max(largest, (repaired[v] - placed.positions[v]).norm());
-      const SurfaceSample& sample = samples[v];
+      const SurfacePoint& sample = samples[v];
       if (sample.triangle < 0)
         continue;
       const Triangle& tri = parameterized.net.mesh.triangle(sample.triangle);
@@ -276,7 +276,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     EXPECT_EQ(report.centroidFlipsAfter, std::count(flippedAfter.begin(), flippedAfter.end(), 1)) << name;
     FoldRepairOptions foldsOnly;
     foldsOnly.centroidFlips = false;
-    std::vector<SurfaceSample> foldsOnlySamples = placed.samples;
+    std::vector<SurfacePoint> foldsOnlySamples = placed.samples;
     FoldRepairReport foldsOnlyReport;
     ASSERT_TRUE(repairFolds(remesh, parameterized.net.mesh, foldsOnlySamples, foldsOnly, &foldsOnlyReport).ok());
     EXPECT_EQ(foldsOnlyReport.centroidFlipsBefore, 0) << name; // the pass did not run
@@ -292,7 +292,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     // more folds.
     FoldRepairOptions narrow;
     narrow.regionWidening = 1;
-    std::vector<SurfaceSample> narrowSamples = placed.samples;
+    std::vector<SurfacePoint> narrowSamples = placed.samples;
     FoldRepairReport narrowReport;
     ASSERT_TRUE(repairFolds(remesh, parameterized.net.mesh, narrowSamples, narrow, &narrowReport).ok()) << name;
     EXPECT_GT(narrowReport.foldedAfter, report.foldedAfter) << name;
@@ -367,7 +367,7 @@ TEST(FoldRepair, NamesTheLandmarksWhereTheFoldsStayOnModel384)
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
   test::ParameterizedModel model;
   ASSERT_TRUE(test::parameterizeOnDomain(test::landmarkedRealModel("384"), domain, model).ok());
-  std::vector<SurfaceSample> samples = place(remesh, domain, model).samples;
+  std::vector<SurfacePoint> samples = place(remesh, domain, model).samples;
   FoldRepairReport report;
   ASSERT_TRUE(repairFolds(remesh, model.net.mesh, samples, {}, &report).ok());
   const std::vector<int> counts =

@@ -316,7 +316,7 @@ TEST(LoopWavelet, RejectsBadInput)
   // An adaptive remesh is refused; adaptive with every split is uniform.
   SemiRegularMesh adaptive;
   ASSERT_TRUE(buildAdaptiveSemiRegularMesh(
-    domain, 3, [](const std::array<BaseLocation, 3>& corners, int) { return corners[0].triangle == 0; }, adaptive)
+    domain, 3, [](const std::array<SurfacePoint, 3>& corners, int) { return corners[0].triangle == 0; }, adaptive)
                 .ok());
   const Status refused = transform.build(adaptive);
   EXPECT_NE(refused.message().find("uniform"), std::string::npos) << refused.message();

@@ -112,11 +112,11 @@ Eigen::MatrixXd toMatrix(const std::vector<Vec3>& points)
 TriangleMesh drawnOnDomain(const BaseDomain& domain, const SemiRegularMesh& mesh)
 {
   TriangleMesh drawn;
-  for (const BaseLocation& at : mesh.locations)
+  for (const SurfacePoint& at : mesh.locations)
   {
     Vec3 p = Vec3::Zero();
     for (int k = 0; k < 3; ++k)
-      p += at.coordinates[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
+      p += at.weight[k] * domain.mesh.points[domain.mesh.triangles[at.triangle][k]];
     drawn.points.push_back(p);
   }
   drawn.triangles = mesh.triangles;

@@ -69,7 +69,7 @@ TEST_F(RemeshOfSpheres, IsTheChainOfItsParts)
   for (int m = 0; m < 2; ++m)
   {
     const TracedNet& net = parameterized_[m].net;
-    std::vector<SurfaceSample> samples;
+    std::vector<SurfacePoint> samples;
     ASSERT_TRUE(placeOnSurface(mesh, maps_[m], samples).ok());
     FoldRepairReport repair;
     ASSERT_TRUE(repairFolds(mesh, net.mesh, samples, {}, &repair).ok());
@@ -152,7 +152,7 @@ TEST_F(RemeshOfSpheres, RefinesAndRelaxesOverTheWholeCollection)
   ASSERT_EQ(remeshed.mesh.vertexCount(), mesh.vertexCount());
   EXPECT_EQ(remeshed.mesh.triangles, mesh.triangles);
   for (int v = 0; v < mesh.vertexCount(); ++v)
-    ASSERT_EQ(remeshed.mesh.locations[v].coordinates, mesh.locations[v].coordinates) << "vertex " << v;
+    ASSERT_EQ(remeshed.mesh.locations[v].weight, mesh.locations[v].weight) << "vertex " << v;
   // Without repair every vertex is where its parameterization puts it.
   for (int m = 0; m < 2; ++m)
   {

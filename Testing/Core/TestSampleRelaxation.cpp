@@ -16,15 +16,15 @@ namespace
 /// Hausdorff distance of the remesh of `model` from it, over its diagonal.
 double relativeHausdorff(const SemiRegularMesh& remesh, const ParameterizedSurface& surface, const TracedNet& net)
 {
-  std::vector<SurfaceSample> samples;
+  std::vector<SurfacePoint> samples;
   EXPECT_TRUE(placeOnSurface(remesh, surface, samples).ok());
   const TriangleMesh drawn{ samplePositions(net, samples), remesh.triangles };
   return surfaceDistance(drawn, net.mesh.toTriangleMesh()).hausdorff() / surface.boundingBoxDiagonal();
 }
 
-bool strictlyInside(const BaseLocation& at)
+bool strictlyInside(const SurfacePoint& at)
 {
-  return std::all_of(at.coordinates.begin(), at.coordinates.end(), [](double c) { return c > 0.0; });
+  return std::all_of(at.weight.begin(), at.weight.end(), [](double c) { return c > 0.0; });
 }
 
 /// Remesh triangles that are not counter-clockwise in their base triangle.
@@ -36,9 +36,9 @@ int clockwiseTriangles(const BaseDomain& domain, const SemiRegularMesh& remesh)
     Vec2 corner[3];
     for (int k = 0; k < 3; ++k)
     {
-      const BaseLocation& at = remesh.locations[remesh.triangles[t][k]];
+      const SurfacePoint& at = remesh.locations[remesh.triangles[t][k]];
       std::array<double, 3> c{};
-      EXPECT_TRUE(coordinatesInTriangle(domain, at.triangle, at.coordinates, remesh.patchOfTriangle[t], c));
+      EXPECT_TRUE(coordinatesInTriangle(domain, at.triangle, at.weight, remesh.patchOfTriangle[t], c));
       corner[k] = Vec2(c[1], c[2]);
     }
     clockwise += !(cross2(corner[1] - corner[0], corner[2] - corner[0]) > 0.0);
@@ -51,7 +51,7 @@ void expectSameLocations(const SemiRegularMesh& mesh, const SemiRegularMesh& exp
 {
   ASSERT_EQ(mesh.vertexCount(), expected.vertexCount());
   for (int v = 0; v < mesh.vertexCount(); ++v)
-    ASSERT_EQ(mesh.locations[v].coordinates, expected.locations[v].coordinates) << "vertex " << v;
+    ASSERT_EQ(mesh.locations[v].weight, expected.locations[v].weight) << "vertex " << v;
 }
 
 /// Model 387 parameterized on `L0` from 381, indexed once for the tests
@@ -121,23 +121,23 @@ TEST(SampleRelaxation, ReachesFurtherIntoATailAndKeepsAValidLayout)
   int moved = 0, slid = 0;
   for (int v = 0; v < uniform.vertexCount(); ++v)
   {
-    const BaseLocation &before = uniform.locations[v], &after = relaxed.locations[v];
+    const SurfacePoint &before = uniform.locations[v], &after = relaxed.locations[v];
     ASSERT_EQ(after.triangle, before.triangle);
     if (v < domain.mesh.vertexCount())
-      EXPECT_EQ(after.coordinates, before.coordinates) << "landmark " << v << " moved";
+      EXPECT_EQ(after.weight, before.weight) << "landmark " << v << " moved";
     else if (strictlyInside(before))
       EXPECT_TRUE(strictlyInside(after)) << "vertex " << v << " left its base triangle";
     else
     {
       for (int k = 0; k < 3; ++k)
       {
-        EXPECT_EQ(after.coordinates[k] == 0.0, before.coordinates[k] == 0.0) << "vertex " << v << " left its base edge";
-        EXPECT_GE(after.coordinates[k], 0.0);
+        EXPECT_EQ(after.weight[k] == 0.0, before.weight[k] == 0.0) << "vertex " << v << " left its base edge";
+        EXPECT_GE(after.weight[k], 0.0);
       }
-      EXPECT_DOUBLE_EQ(after.coordinates[0] + after.coordinates[1] + after.coordinates[2], 1.0);
-      slid += after.coordinates != before.coordinates;
+      EXPECT_DOUBLE_EQ(after.weight[0] + after.weight[1] + after.weight[2], 1.0);
+      slid += after.weight != before.weight;
     }
-    moved += after.coordinates != before.coordinates;
+    moved += after.weight != before.weight;
   }
   EXPECT_GT(moved, uniform.vertexCount() / 2);
   EXPECT_GT(slid, 0);
@@ -208,10 +208,10 @@ TEST(SampleRelaxation, ModelsSpreadOverRanksMoveTheLocationsAsOneProcessDoes)
     for (int v = 0; v < serial.vertexCount(); ++v)
     {
       // The ranks agree bit for bit; with one process, up to the order of the sums.
-      EXPECT_EQ(results[0].locations[v].coordinates, results[1].locations[v].coordinates) << "vertex " << v;
+      EXPECT_EQ(results[0].locations[v].weight, results[1].locations[v].weight) << "vertex " << v;
       for (int k = 0; k < 3; ++k)
         largest = std::max(largest,
-          std::abs(results[0].locations[v].coordinates[k] - serial.locations[v].coordinates[k]));
+          std::abs(results[0].locations[v].weight[k] - serial.locations[v].weight[k]));
     }
     EXPECT_LT(largest, 1e-9);
   }
@@ -290,7 +290,7 @@ TEST_F(SampleRelaxationOn387, BadInputIsNamedAndLeavesTheRemeshAlone)
   // A vertex whose base location is not in the base triangle of its triangle.
   SemiRegularMesh misplaced = mesh;
   const int inside = mesh.vertexCount() - 1; // the last midpoint of level 3 lies inside a base triangle
-  ASSERT_TRUE(std::all_of(mesh.locations[inside].coordinates.begin(), mesh.locations[inside].coordinates.end(),
+  ASSERT_TRUE(std::all_of(mesh.locations[inside].weight.begin(), mesh.locations[inside].weight.end(),
     [](double c) { return c > 0.0; }));
   misplaced.locations[inside].triangle = (mesh.locations[inside].triangle + 1) % domain.mesh.triangleCount();
   const Status outside = relaxSampleLocations(domain, collection(), misplaced);
@@ -302,7 +302,7 @@ TEST_F(SampleRelaxationOn387, BadInputIsNamedAndLeavesTheRemeshAlone)
   SemiRegularMesh foreign = mesh;
   foreign.patchOfTriangle.back() = domain.mesh.triangleCount();
   ASSERT_FALSE(relaxSampleLocations(domain, collection(), foreign).ok());
-  EXPECT_EQ(foreign.locations[mesh.vertexCount() - 1].coordinates, untouched.locations[mesh.vertexCount() - 1].coordinates);
+  EXPECT_EQ(foreign.locations[mesh.vertexCount() - 1].weight, untouched.locations[mesh.vertexCount() - 1].weight);
 
   // Over ranks: no rank has a model, or one rank's input is bad; every rank says so.
   for (bool badOnRankOne : { false, true })

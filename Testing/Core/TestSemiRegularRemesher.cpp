@@ -43,7 +43,7 @@ TEST(SemiRegularRemesher, ConnectivityIsAClosedQuadrisectionNumberedLevelByLevel
     for (int v = 0; v < previous.vertexCount(); ++v)
     {
       EXPECT_EQ(mesh.locations[v].triangle, previous.locations[v].triangle);
-      EXPECT_EQ(mesh.locations[v].coordinates, previous.locations[v].coordinates);
+      EXPECT_EQ(mesh.locations[v].weight, previous.locations[v].weight);
     }
     previous = mesh;
   }
@@ -58,7 +58,7 @@ namespace
 /// Remesh triangles whose normal points against the input surface under
 /// them (the sum of the normals of the input triangles their corners lie in).
 int trianglesAgainstSurface(const SemiRegularMesh& remesh, const TracedNet& net,
-  const std::vector<SurfaceSample>& samples, const std::vector<Vec3>& positions)
+  const std::vector<SurfacePoint>& samples, const std::vector<Vec3>& positions)
 {
   int flipped = 0;
   for (const Triangle& tri : remesh.triangles)
@@ -67,7 +67,7 @@ int trianglesAgainstSurface(const SemiRegularMesh& remesh, const TracedNet& net,
     Vec3 surfaceNormal = Vec3::Zero();
     for (int v : tri)
     {
-      const SurfaceSample& s = samples[v];
+      const SurfacePoint& s = samples[v];
       if (s.vertex[1] < 0)
         continue; // a landmark: no triangle recorded
       const Vec3 a = net.mesh.point(s.vertex[0]), b = net.mesh.point(s.vertex[1]), c = net.mesh.point(s.vertex[2]);
@@ -105,7 +105,7 @@ TEST(SemiRegularRemesher, EveryRealModelGetsTheSameConnectivity)
     ASSERT_TRUE(parameterizedStatus.ok()) << parameterizedStatus.message();
     const TracedNet& net = parameterized.net;
     const auto start = std::chrono::steady_clock::now();
-    std::vector<SurfaceSample> samples;
+    std::vector<SurfacePoint> samples;
     const Status placed = placeOnSurface(remesh, net, domain, parameterized.parameterization, samples);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(placed.ok()) << name << ": " << placed.message();
@@ -169,7 +169,7 @@ TEST(SemiRegularRemesher, LowerStretchReachesFurtherIntoLandmarkFreeProtrusions)
     int flipped = 0;
     for (int mode = 0; mode < 2; ++mode)
     {
-      std::vector<SurfaceSample> samples;
+      std::vector<SurfacePoint> samples;
       ASSERT_TRUE(placeOnSurface(remesh, parameterized.net, domain,
         mode == 0 ? parameterized.parameterization : lowered, samples).ok()) << name;
       const std::vector<Vec3> positions = samplePositions(parameterized.net, samples);
@@ -209,7 +209,7 @@ TEST(SemiRegularRemesher, LowerStretchSettlesTheSameWayWhateverTheRounding)
     options.lowerStretch = true;
     PatchParameterization lowered;
     ASSERT_TRUE(parameterizePatches(parameterized.net, domain, lowered, options).ok());
-    std::vector<SurfaceSample> samples;
+    std::vector<SurfacePoint> samples;
     ASSERT_TRUE(placeOnSurface(remesh, parameterized.net, domain, lowered, samples).ok());
     const std::vector<Vec3> positions = samplePositions(parameterized.net, samples);
     hausdorff.push_back(surfaceDistance(remeshSurface(remesh, positions), model.data.mesh).hausdorff() /
@@ -261,12 +261,11 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
     {
       const ParameterizedSurface& surface = *collection[m];
       std::array<Vec3, 3> at;
-      SurfaceSample sample;
+      SurfacePoint sample;
       for (int k = 0; k < 3; ++k)
       {
-        BaseLocation location;
-        location.triangle = base;
-        location.coordinates = { 1.0 - corner[k].x() - corner[k].y(), corner[k].x(), corner[k].y() };
+        const SurfacePoint location = SurfacePoint::inTriangle(
+          domain.mesh, base, { 1.0 - corner[k].x() - corner[k].y(), corner[k].x(), corner[k].y() });
         ASSERT_TRUE(surface.locate(location, sample).ok());
         at[k] = surface.position(sample);
       }
@@ -278,9 +277,7 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
           if (w[0] == 1.0 || w[1] == 1.0 || w[2] == 1.0)
             continue;
           const Vec2 p = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
-          BaseLocation location;
-          location.triangle = base;
-          location.coordinates = { 1.0 - p.x() - p.y(), p.x(), p.y() };
+          const SurfacePoint location = SurfacePoint::inTriangle(domain.mesh, base, { 1.0 - p.x() - p.y(), p.x(), p.y() });
           ASSERT_TRUE(surface.locate(location, sample).ok());
           const double off = (surface.position(sample) - (w[0] * at[0] + w[1] * at[1] + w[2] * at[2])).norm();
           const bool far = off > tolerance * surface.boundingBoxDiagonal() * (1.0 + 1e-9);
@@ -305,7 +302,7 @@ TEST(SemiRegularRemesher, AdaptiveRemeshOfACollectionIsSharedAndCloserPerTriangl
   // Every leaf the rule left alone is flat enough on every model.
   for (std::size_t i = 0; i < names.size(); ++i)
   {
-    std::vector<SurfaceSample> samples;
+    std::vector<SurfacePoint> samples;
     ASSERT_TRUE(
       placeOnSurface(adaptive, parameterized[i].net, domain, parameterized[i].parameterization, samples).ok());
     const std::vector<Vec3> positions = samplePositions(parameterized[i].net, samples);
@@ -381,7 +378,7 @@ TEST(SemiRegularRemesher, AdaptiveWithEverySplitIsTheUniformRemesh)
     for (int v = 0; v < uniform.vertexCount(); ++v)
     {
       EXPECT_EQ(adaptive.locations[v].triangle, uniform.locations[v].triangle);
-      EXPECT_EQ(adaptive.locations[v].coordinates, uniform.locations[v].coordinates);
+      EXPECT_EQ(adaptive.locations[v].weight, uniform.locations[v].weight);
     }
   }
   SemiRegularMesh none;
@@ -396,14 +393,14 @@ TEST(SemiRegularRemesher, AdaptiveRefinementIsClosedBalancedAndDeterministic)
   const BaseDomain domain = octahedronDomain();
   // Refine towards one base vertex only: the rest must be closed off.
   const int corner = 0;
-  const auto nearCorner = [&](const std::array<BaseLocation, 3>& corners, int)
+  const auto nearCorner = [&](const std::array<SurfacePoint, 3>& corners, int)
   {
     const Triangle& base = domain.mesh.triangles[corners[0].triangle];
     const auto k = std::find(base.begin(), base.end(), corner) - base.begin();
     if (k == 3)
       return false;
-    for (const BaseLocation& at : corners)
-      if (at.coordinates[k] > 0.9)
+    for (const SurfacePoint& at : corners)
+      if (at.weight[k] > 0.9)
         return true;
     return false;
   };

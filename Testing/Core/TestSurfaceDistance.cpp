@@ -66,25 +66,26 @@ int countMismatches(const TriangleMesh& mesh, const std::vector<Vec3>& queries)
   {
     const ClosestPointQuery::Result r = query.closest(p);
     const double expected = bruteForceDistance(mesh, p);
-    bool ok = r.triangle >= 0 && r.triangle < mesh.triangleCount() && std::abs(r.distance - expected) < 1e-12;
+    bool ok = r.at.triangle >= 0 && r.at.triangle < mesh.triangleCount() && std::abs(r.distance - expected) < 1e-12;
     if (ok)
     {
       // The reported triangle, coordinates and point describe the same place.
-      const Triangle& tri = mesh.triangles[r.triangle];
+      const Triangle& tri = mesh.triangles[r.at.triangle];
+      ok = ok && r.at.vertex == tri;
       Vec3 fromWeights = Vec3::Zero();
       double sum = 0.0;
       for (int k = 0; k < 3; ++k)
       {
-        fromWeights += r.barycentric[k] * mesh.points[tri[k]];
-        sum += r.barycentric[k];
-        ok = ok && r.barycentric[k] >= -1e-12;
+        fromWeights += r.at.weight[k] * mesh.points[tri[k]];
+        sum += r.at.weight[k];
+        ok = ok && r.at.weight[k] >= -1e-12;
       }
       ok = ok && std::abs(sum - 1.0) < 1e-12 && (fromWeights - r.point).norm() < 1e-12 &&
         std::abs((p - r.point).norm() - r.distance) < 1e-12 &&
-        std::abs(referenceDistance(mesh, r.triangle, p) - expected) < 1e-12;
+        std::abs(referenceDistance(mesh, r.at.triangle, p) - expected) < 1e-12;
     }
     if (!ok && ++mismatches <= 5)
-      ADD_FAILURE() << "query (" << p.transpose() << "): distance " << r.distance << " in triangle " << r.triangle
+      ADD_FAILURE() << "query (" << p.transpose() << "): distance " << r.distance << " in triangle " << r.at.triangle
                     << ", brute force " << expected;
   }
   return mismatches;
@@ -153,14 +154,14 @@ TEST(SurfaceDistance, ClosestPointOfOneTriangleInEachRegion)
   for (const Case& c : cases)
   {
     const ClosestPointQuery::Result r = query.closest(c.p);
-    EXPECT_EQ(r.triangle, 0);
+    EXPECT_EQ(r.at.triangle, 0);
     EXPECT_LT((r.point - c.expected).norm(), 1e-12) << "query " << c.p.transpose() << " gave " << r.point.transpose();
     EXPECT_NEAR(r.distance, (c.p - c.expected).norm(), 1e-12);
   }
   const ClosestPointQuery::Result onEdge = query.closest(Vec3(2, -1, 0.5));
-  EXPECT_NEAR(onEdge.barycentric[0], 0.5, 1e-12);
-  EXPECT_NEAR(onEdge.barycentric[1], 0.5, 1e-12);
-  EXPECT_NEAR(onEdge.barycentric[2], 0.0, 1e-12);
+  EXPECT_NEAR(onEdge.at.weight[0], 0.5, 1e-12);
+  EXPECT_NEAR(onEdge.at.weight[1], 0.5, 1e-12);
+  EXPECT_NEAR(onEdge.at.weight[2], 0.0, 1e-12);
 }
 
 TEST(SurfaceDistance, ClosestPointMatchesBruteForceOnSpheres)
@@ -304,7 +305,7 @@ TEST(SurfaceDistance, DegenerateTrianglesGiveNoNaN)
   {
     const ClosestPointQuery::Result r = query.closest(p);
     const bool finite = std::isfinite(r.distance) && r.point.allFinite() &&
-      std::all_of(r.barycentric.begin(), r.barycentric.end(), [](double w) { return std::isfinite(w); });
+      std::all_of(r.at.weight.begin(), r.at.weight.end(), [](double w) { return std::isfinite(w); });
     if (!finite || std::abs(r.distance - bruteForceDistance(mesh, p)) > 1e-9)
       ++bad;
   }
@@ -320,7 +321,7 @@ TEST(SurfaceDistance, EmptyMeshes)
   const TriangleMesh empty, sphere = test::sphere(1);
   const ClosestPointQuery query(empty);
   const ClosestPointQuery::Result r = query.closest(Vec3(1, 2, 3));
-  EXPECT_EQ(r.triangle, -1);
+  EXPECT_EQ(r.at.triangle, -1);
   EXPECT_TRUE(std::isinf(r.distance));
   const SurfaceDistance d = surfaceDistance(sphere, empty);
   EXPECT_TRUE(std::isinf(d.aToB));

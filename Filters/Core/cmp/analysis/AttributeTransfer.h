@@ -20,14 +20,14 @@ namespace cmp
 ///        give one.
 struct BaseDomainMesh
 {
-  std::vector<BaseLocation> locations; ///< Base location of every vertex.
+  std::vector<SurfacePoint> locations; ///< Base location of every vertex.
   std::vector<Triangle> triangles;     ///< Triangles over those vertices.
   std::vector<int> patchOfTriangle;    ///< Base triangle of every triangle.
 };
 
 /// \brief The source point under every target vertex.
 Status locateVertices(
-  const ParameterizedSurface& source, const BaseDomainMesh& target, std::vector<SurfaceSample>& samples);
+  const ParameterizedSurface& source, const BaseDomainMesh& target, std::vector<SurfacePoint>& samples);
 
 /// \brief The source point under every corner of every target triangle
 ///        (3 per triangle, in corner order), seen from inside that
@@ -38,6 +38,6 @@ Status locateVertices(
 ///        A corner's base location must lie in its triangle's patch or on
 ///        that patch's boundary.
 Status locateCorners(const ParameterizedSurface& source, const BaseDomain& domain, const BaseDomainMesh& target,
-  std::vector<SurfaceSample>& corners, double inset = 1e-6);
+  std::vector<SurfacePoint>& corners, double inset = 1e-6);
 
 } // namespace cmp

@@ -8,6 +8,7 @@
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/map/PatchParameterization.h>
 #include <cmp/mesh/Status.h>
+#include <cmp/mesh/SurfacePoint.h>
 
 #include <array>
 #include <functional>
@@ -15,27 +16,6 @@
 
 namespace cmp
 {
-
-/// \brief A point of the straightener's input surface as a convex
-///        combination of at most three of its vertices (unused slots have
-///        vertex -1 and weight 0). One vertex: that vertex; two: a point of
-///        their edge; three: a point inside their triangle.
-struct SurfacePoint
-{
-  std::array<int, 3> vertex{ { -1, -1, -1 } }; ///< Input vertices.
-  std::array<double, 3> weight{ { 0.0, 0.0, 0.0 } }; ///< Their weights, summing to 1.
-
-  /// \brief The input vertex `v` itself.
-  static SurfacePoint at(int v)
-  {
-    SurfacePoint p;
-    p.vertex[0] = v;
-    p.weight[0] = 1.0;
-    return p;
-  }
-  /// \brief Number of input vertices with a nonzero weight.
-  int supportSize() const { return (vertex[0] >= 0) + (vertex[1] >= 0) + (vertex[2] >= 0); }
-};
 
 /// \brief The point at `t` from `a` to `b` (1 - t, t), its weights merged
 ///        over the input vertices both use. Both must lie in one input

@@ -248,6 +248,7 @@ OneSided oneSidedDistance(const TriangleMesh& from, const TriangleMesh& to, int 
 } // namespace
 
 ClosestPointQuery::ClosestPointQuery(const TriangleMesh& mesh)
+  : mesh_(&mesh)
 {
   const int n = mesh.triangleCount();
   if (n == 0)
@@ -324,9 +325,9 @@ void ClosestPointQuery::testLeaf(const Node& node, const Vec3& p, Result& best, 
     if (squared < bestSquared)
     {
       bestSquared = squared;
-      best.triangle = order_[i];
+      best.at.triangle = order_[i];
       best.point = q;
-      best.barycentric = w;
+      best.at.weight = w;
     }
   }
 }
@@ -368,6 +369,8 @@ ClosestPointQuery::Result ClosestPointQuery::closest(const Vec3& p) const
     if (nearer.squared < bestSquared)
       stack[size++] = nearer;
   }
+  if (best.at.triangle >= 0)
+    best.at.vertex = mesh_->triangles[best.at.triangle];
   best.distance = std::sqrt(bestSquared);
   return best;
 }

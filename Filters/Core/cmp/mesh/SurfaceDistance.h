@@ -4,6 +4,7 @@
 ///        triangle mesh and the sampled Hausdorff and mean distances built on
 ///        them, to measure how faithfully a remesh follows its input.
 
+#include <cmp/mesh/SurfacePoint.h>
 #include <cmp/mesh/TriangleMesh.h>
 
 #include <algorithm>
@@ -25,10 +26,11 @@ public:
   /// \brief The closest point of the mesh to a query point.
   struct Result
   {
-    int triangle = -1;                                    ///< Triangle holding the closest point.
-    Vec3 point = Vec3::Zero();                            ///< The closest point.
-    std::array<double, 3> barycentric{ { 0.0, 0.0, 0.0 } }; ///< Its coordinates in `triangle` (vertex order).
-    double distance = 0.0;                                ///< Distance to the query point.
+    /// \brief The closest point on the mesh: its triangle (-1 for a mesh
+    ///        without triangles) and its barycentric coordinates there.
+    SurfacePoint at;
+    Vec3 point = Vec3::Zero(); ///< Its position.
+    double distance = 0.0;     ///< Its distance to the query point.
   };
 
   /// \brief Builds the tree (O(n log n)); the mesh must outlive the query.
@@ -55,6 +57,7 @@ private:
   /// \brief Replaces `best` by a closer point of a triangle of the leaf `node`.
   void testLeaf(const Node& node, const Vec3& p, Result& best, double& bestSquared) const;
 
+  const TriangleMesh* mesh_; ///< The mesh queried (for the corners of a result's triangle).
   std::vector<Node> nodes_;
   std::vector<int> order_; ///< Triangle ids, grouped by leaf.
   /// \brief Corners of `order_[i]`, copied next to each other so a leaf's

@@ -47,11 +47,11 @@ Vec3 turnAcross(const EditableMesh& surface, int u, int v, int apex, const Vec3&
 
 } // namespace
 
-Vec3 surfacePosition(const EditableMesh& surface, const TrianglePoint& p)
+Vec3 surfacePosition(const EditableMesh& surface, const SurfacePoint& p)
 {
   const Triangle& tri = surface.triangle(p.triangle);
-  return p.coordinates[0] * surface.point(tri[0]) + p.coordinates[1] * surface.point(tri[1]) +
-    p.coordinates[2] * surface.point(tri[2]);
+  return p.weight[0] * surface.point(tri[0]) + p.weight[1] * surface.point(tri[1]) +
+    p.weight[2] * surface.point(tri[2]);
 }
 
 Vec3 surfaceTriangleNormal(const EditableMesh& surface, int t)
@@ -62,8 +62,10 @@ Vec3 surfaceTriangleNormal(const EditableMesh& surface, int t)
   return length > 0.0 ? Vec3(n / length) : Vec3::Zero();
 }
 
-TrianglePoint walkOnSurface(const EditableMesh& surface, TrianglePoint p, Vec3 step)
+SurfacePoint walkOnSurface(const EditableMesh& surface, SurfacePoint p, Vec3 step)
 {
+  const auto coordinates = [&p]() { return Eigen::Map<const Eigen::Vector3d>(p.weight.data()); };
+  const auto setCoordinates = [&p](const Eigen::Vector3d& c) { p.weight = { c[0], c[1], c[2] }; };
   for (int crossing = 0; crossing < kMaximumCrossings; ++crossing)
   {
     const Vec3 normal = surfaceTriangleNormal(surface, p.triangle);
@@ -75,7 +77,7 @@ TrianglePoint walkOnSurface(const EditableMesh& surface, TrianglePoint p, Vec3 s
       return p;
     if (target.minCoeff() >= 0.0)
     {
-      p.coordinates = target;
+      setCoordinates(target);
       return p;
     }
     // The side left first: the corner whose coordinate reaches zero first.
@@ -84,12 +86,12 @@ TrianglePoint walkOnSurface(const EditableMesh& surface, TrianglePoint p, Vec3 s
     for (int k = 0; k < 3; ++k)
       if (target[k] < 0.0)
       {
-        const double at = p.coordinates[k] / (p.coordinates[k] - target[k]);
+        const double at = p.weight[k] / (p.weight[k] - target[k]);
         if (corner < 0 || at < fraction)
           corner = k, fraction = at;
       }
     fraction = std::clamp(fraction, 0.0, 1.0);
-    Eigen::Vector3d exit = (p.coordinates + fraction * (target - p.coordinates)).cwiseMax(0.0);
+    Eigen::Vector3d exit = (coordinates() + fraction * (target - coordinates())).cwiseMax(0.0);
     exit[corner] = 0.0;
     exit /= exit.sum();
 
@@ -97,15 +99,16 @@ TrianglePoint walkOnSurface(const EditableMesh& surface, TrianglePoint p, Vec3 s
     const int across = surface.opposite(h);
     if (across < 0)
     {
-      p.coordinates = exit;
+      setCoordinates(exit);
       return p;
     }
     const int u = surface.from(h), v = surface.to(h);
     step = turnAcross(surface, u, v, surface.from(EditableMesh::prev(across)), (1.0 - fraction) * step);
     p.triangle = EditableMesh::triangleOf(across);
     const Triangle& tri = surface.triangle(p.triangle);
+    p.vertex = tri;
     for (int k = 0; k < 3; ++k)
-      p.coordinates[k] = tri[k] == u ? exit[(corner + 1) % 3] : tri[k] == v ? exit[(corner + 2) % 3] : 0.0;
+      p.weight[k] = tri[k] == u ? exit[(corner + 1) % 3] : tri[k] == v ? exit[(corner + 2) % 3] : 0.0;
   }
   return p;
 }

@@ -4,23 +4,17 @@
 ///        moving a sample without leaving the surface.
 
 #include <cmp/mesh/EditableMesh.h>
+#include <cmp/mesh/SurfacePoint.h>
 
 #include <Eigen/Core>
 
 namespace cmp
 {
 
-/// \brief A point of a surface given by the triangle holding it and its
-///        barycentric coordinates in the order of that triangle's vertices
-///        (unlike the straightener's `SurfacePoint`, always three).
-struct TrianglePoint
-{
-  int triangle = -1;                                     ///< Surface triangle.
-  Eigen::Vector3d coordinates = Eigen::Vector3d::Zero(); ///< Barycentric coordinates (sum 1).
-};
-
 /// \brief The position of `p`.
-Vec3 surfacePosition(const EditableMesh& surface, const TrianglePoint& p);
+/// \pre `p.triangle` is a triangle of `surface` and `p.weight` its
+///      barycentric coordinates there (`SurfacePoint::inTriangle`).
+Vec3 surfacePosition(const EditableMesh& surface, const SurfacePoint& p);
 
 /// \brief Unit normal of surface triangle `t`; zero for a degenerate one.
 Vec3 surfaceTriangleNormal(const EditableMesh& surface, int t);
@@ -32,6 +26,7 @@ Vec3 surfaceTriangleNormal(const EditableMesh& surface, int t);
 ///        lies on the surface about |step| from `p`, on the side `step`
 ///        points to. Stops early at a degenerate triangle or after 2000
 ///        crossings (a step circling a degenerate spot).
-TrianglePoint walkOnSurface(const EditableMesh& surface, TrianglePoint p, Vec3 step);
+/// \pre `p` as for `surfacePosition()`; so is the result.
+SurfacePoint walkOnSurface(const EditableMesh& surface, SurfacePoint p, Vec3 step);
 
 } // namespace cmp

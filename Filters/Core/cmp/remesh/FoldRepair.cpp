@@ -64,7 +64,7 @@ Vec3 signedQualityGradient(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
 /// landmark (triangle -1) or a convex combination of the vertices of a
 /// live surface triangle.
 Status checkSamples(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples)
 {
   const int n = remesh.vertexCount();
   if (samples.size() != static_cast<std::size_t>(n))
@@ -77,7 +77,7 @@ Status checkSamples(
           std::to_string(v) + " of " + std::to_string(n));
   for (int v = 0; v < n; ++v)
   {
-    const SurfaceSample& s = samples[v];
+    const SurfacePoint& s = samples[v];
     const std::string which = "fold repair: sample " + std::to_string(v);
     if (s.triangle < -1 || s.triangle >= surface.triangleCount())
       return Status::error(which + " names surface triangle " + std::to_string(s.triangle) + " of " +
@@ -107,7 +107,7 @@ Status checkSamples(
 
 /// Per remesh triangle, its signed quality against the surface under it.
 std::vector<double> triangleQualities(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples)
 {
   std::vector<Vec3> positions(samples.size()), normals(samples.size(), Vec3::Zero());
   for (std::size_t v = 0; v < samples.size(); ++v)
@@ -174,9 +174,9 @@ bool facesAgainstNearest(const Vec3& a, const Vec3& b, const Vec3& c, const Clos
   const TriangleMesh& surface)
 {
   const ClosestPointQuery::Result nearest = query.closest((a + b + c) / 3.0);
-  if (nearest.triangle < 0)
+  if (nearest.at.triangle < 0)
     return false;
-  const Triangle& under = surface.triangles[nearest.triangle];
+  const Triangle& under = surface.triangles[nearest.at.triangle];
   const Vec3 there =
     (surface.points[under[1]] - surface.points[under[0]]).cross(surface.points[under[2]] - surface.points[under[0]]);
   return (b - a).cross(c - a).dot(there) < 0.0;
@@ -186,7 +186,7 @@ class FoldedRemesh
 {
 public:
   /// Samples must have passed checkSamples().
-  FoldedRemesh(const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+  FoldedRemesh(const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples)
     : remesh_(remesh)
     , surface_(surface)
     , points_(samples.size())
@@ -200,13 +200,14 @@ public:
       positions_[v] = samplePosition(surface, samples[v]);
       if (samples[v].triangle < 0)
         continue; // a landmark: pinned, and records no normal
-      TrianglePoint& p = points_[v];
+      SurfacePoint& p = points_[v];
       p.triangle = samples[v].triangle;
       const Triangle& tri = surface.triangle(p.triangle);
+      p.vertex = tri;
       for (int j = 0; j < 3; ++j)
         for (int k = 0; k < 3; ++k)
           if (tri[k] == samples[v].vertex[j])
-            p.coordinates[k] += samples[v].weight[j];
+            p.weight[k] += samples[v].weight[j];
       normals_[v] = surfaceTriangleNormal(surface, p.triangle);
     }
     for (int t = 0; t < triangleCount(); ++t)
@@ -220,11 +221,11 @@ public:
   bool pinned(int v) const { return points_[v].triangle < 0; }
   const Vec3& position(int v) const { return positions_[v]; }
   const Vec3& normal(int v) const { return normals_[v]; }
-  const TrianglePoint& point(int v) const { return points_[v]; }
+  const SurfacePoint& point(int v) const { return points_[v]; }
   const std::vector<int>& neighbours(int v) const { return neighbours_[v]; }
   const std::vector<int>& trianglesOf(int v) const { return trianglesOf_[v]; }
 
-  void moveTo(int v, const TrianglePoint& p)
+  void moveTo(int v, const SurfacePoint& p)
   {
     points_[v] = p;
     positions_[v] = surfacePosition(surface_, p);
@@ -302,7 +303,7 @@ private:
 
   const SemiRegularMesh& remesh_;
   const EditableMesh& surface_;
-  std::vector<TrianglePoint> points_;
+  std::vector<SurfacePoint> points_;
   std::vector<Vec3> positions_;
   std::vector<Vec3> normals_;
   std::vector<std::vector<int>> trianglesOf_;
@@ -323,15 +324,15 @@ bool tryShortMoves(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
     shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
   const Vec3 normal = mesh.normal(v);
   const Vec3 first = normal.unitOrthogonal(), second = normal.cross(first);
-  const TrianglePoint start = mesh.point(v);
-  TrianglePoint best = start;
+  const SurfacePoint start = mesh.point(v);
+  SurfacePoint best = start;
   auto bestScore = current;
   bool moved = false;
   for (double fraction : kStepFractions)
     for (int k = 0; k < kDirections; ++k)
     {
       const double angle = 2.0 * kPi * k / kDirections;
-      const TrianglePoint tried =
+      const SurfacePoint tried =
         walkOnSurface(surface, start, fraction * shortest * (std::cos(angle) * first + std::sin(angle) * second));
       mesh.moveTo(v, tried);
       if ((mesh.position(v) - origin).norm() > reach)
@@ -467,15 +468,15 @@ public:
     return total;
   }
 
-  std::vector<TrianglePoint> snapshot() const
+  std::vector<SurfacePoint> snapshot() const
   {
-    std::vector<TrianglePoint> points;
+    std::vector<SurfacePoint> points;
     for (int v : vertices_)
       points.push_back(mesh_.point(v));
     return points;
   }
 
-  void restore(const std::vector<TrianglePoint>& points)
+  void restore(const std::vector<SurfacePoint>& points)
   {
     for (std::size_t i = 0; i < vertices_.size(); ++i)
       mesh_.moveTo(vertices_[i], points[i]);
@@ -501,7 +502,7 @@ double descend(const EditableMesh& surface, FoldedRemesh& mesh, FoldRegion& regi
     steepest = std::max(steepest, (gradient[i] = penaltyGradient(mesh, vertices[i])).norm());
   if (!(steepest > 0.0))
     return 0.0;
-  const std::vector<TrianglePoint> start = region.snapshot();
+  const std::vector<SurfacePoint> start = region.snapshot();
   for (int attempt = 0; attempt < kBacktrackingSteps; ++attempt, step *= 0.5)
   {
     for (std::size_t i = 0; i < vertices.size(); ++i)
@@ -536,9 +537,9 @@ void untanglePart(
   int folded = 0;
   double energy = region.penalty(folded);
   const int foldedAtStart = folded;
-  const std::vector<TrianglePoint> atStart = region.snapshot();
+  const std::vector<SurfacePoint> atStart = region.snapshot();
   int fewestFolded = folded;
-  std::vector<TrianglePoint> fewest = atStart;
+  std::vector<SurfacePoint> fewest = atStart;
   double step = 1.0;
   for (int iteration = 0; iteration < kUntangleIterations && folded > 0; ++iteration)
   {
@@ -623,21 +624,15 @@ std::vector<double> singleMoveReach(const FoldedRemesh& mesh, double reach, doub
 
 /// Writes every vertex that left its sample's point back into `samples`,
 /// and counts those whose position changed.
-void writeBack(const EditableMesh& surface, const FoldedRemesh& mesh, const std::vector<TrianglePoint>& placed,
-  const std::vector<Vec3>& origin, std::vector<SurfaceSample>& samples, FoldRepairReport& report)
+void writeBack(const FoldedRemesh& mesh, const std::vector<SurfacePoint>& placed,
+  const std::vector<Vec3>& origin, std::vector<SurfacePoint>& samples, FoldRepairReport& report)
 {
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    const TrianglePoint& p = mesh.point(v);
-    if (mesh.pinned(v) || (p.triangle == placed[v].triangle && p.coordinates == placed[v].coordinates))
+    const SurfacePoint& p = mesh.point(v);
+    if (mesh.pinned(v) || (p.triangle == placed[v].triangle && p.weight == placed[v].weight))
       continue;
-    SurfaceSample& s = samples[v];
-    s.triangle = p.triangle;
-    for (int k = 0; k < 3; ++k)
-    {
-      s.vertex[k] = surface.triangle(p.triangle)[k];
-      s.weight[k] = p.coordinates[k];
-    }
+    samples[v] = p; // in the order of its triangle's corners
     // The same point seen from the next triangle is not a move.
     const double moved = (mesh.position(v) - origin[v]).norm();
     if (moved > 0.0)
@@ -651,14 +646,14 @@ void writeBack(const EditableMesh& surface, const FoldedRemesh& mesh, const std:
 } // namespace
 
 int countFoldedTriangles(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples)
 {
   const std::vector<double> qualities = triangleQualities(remesh, surface, samples);
   return static_cast<int>(std::count_if(qualities.begin(), qualities.end(), [](double q) { return q < 0.0; }));
 }
 
 std::vector<char> foldedTriangles(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples)
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples)
 {
   const std::vector<double> qualities = triangleQualities(remesh, surface, samples);
   std::vector<char> folded(qualities.size());
@@ -737,7 +732,7 @@ std::vector<int> foldsNearLandmarks(
   return foldsNearLandmarks(nearestLandmarkOfTriangles(remesh, landmarkCount), landmarkCount, folded);
 }
 
-Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
+Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfacePoint>& samples,
   const FoldRepairOptions& options, FoldRepairReport* report)
 {
   if (Status status = checkSamples(remesh, surface, samples); !status.ok())
@@ -751,7 +746,7 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
   result.foldedBefore = result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   FoldedRemesh mesh(remesh, surface, samples);
   std::vector<Vec3> origin;
-  std::vector<TrianglePoint> placed;
+  std::vector<SurfacePoint> placed;
   for (int v = 0; v < mesh.vertexCount(); ++v)
     origin.push_back(mesh.position(v)), placed.push_back(mesh.point(v));
   const double typicalEdge = kTypicalEdgeShare * medianEdgeLength(mesh);
@@ -809,7 +804,7 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
         break;
     }
   }
-  writeBack(surface, mesh, placed, origin, samples, result);
+  writeBack(mesh, placed, origin, samples, result);
   result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   if (report)
     *report = result;

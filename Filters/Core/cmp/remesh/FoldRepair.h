@@ -60,12 +60,12 @@ struct FoldRepairReport
 ///        triangles holding their corners (landmark corners record none; a
 ///        triangle of landmarks only, or a flat one, is not counted).
 int countFoldedTriangles(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples);
 
 /// \brief 1 for each remesh triangle `countFoldedTriangles()` counts, 0
 ///        for the others, in triangle order.
 std::vector<char> foldedTriangles(
-  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfaceSample>& samples);
+  const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples);
 
 /// \brief The centroid criterion, a second opinion on folds that needs
 ///        no parameterization: 1 for each triangle of `placed` (a remesh
@@ -129,7 +129,7 @@ std::vector<int> foldsNearLandmarks(
 /// Landmark samples never move. Every moved sample still names the surface triangle
 /// it lies in. Fails, changing nothing, on samples that do not fit `remesh`
 /// and `surface`.
-Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfaceSample>& samples,
+Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfacePoint>& samples,
   const FoldRepairOptions& options = {}, FoldRepairReport* report = nullptr);
 
 } // namespace cmp

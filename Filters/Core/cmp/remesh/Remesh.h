@@ -75,7 +75,7 @@ struct RemeshModel
 /// \brief The shared remesh placed on one model.
 struct RemeshedModel
 {
-  std::vector<SurfaceSample> samples; ///< Where each remesh vertex lies on the model's layout.
+  std::vector<SurfacePoint> samples; ///< Where each remesh vertex lies on the model's layout.
   std::vector<Vec3> positions;        ///< Their positions.
   std::vector<char> folded;           ///< Per triangle: 1 if it faces against the model (after repair).
   /// \brief Per triangle: 1 if it faces against the model by the centroid

@@ -86,9 +86,9 @@ std::vector<std::vector<MassPoint>> collectMass(const std::vector<const Paramete
 
 /// True where every barycentric coordinate is positive: inside a base
 /// triangle, free to move.
-bool insideBaseTriangle(const BaseLocation& at)
+bool insideBaseTriangle(const SurfacePoint& at)
 {
-  return at.coordinates[0] > 0.0 && at.coordinates[1] > 0.0 && at.coordinates[2] > 0.0;
+  return at.weight[0] > 0.0 && at.weight[1] > 0.0 && at.weight[2] > 0.0;
 }
 
 /// One base triangle's part of the remesh, in its (c1, c2) coordinates.
@@ -135,7 +135,7 @@ public:
     if (!(fraction > 0.0))
       return 0.0;
     const Vec2 to = position_.at(v);
-    remesh_.locations[v].coordinates = { 1.0 - to.x() - to.y(), to.x(), to.y() };
+    remesh_.locations[v].weight = { 1.0 - to.x() - to.y(), to.x(), to.y() };
     return (to - from).norm();
   }
 
@@ -182,9 +182,9 @@ struct EdgePlace
 };
 
 /// True, with `place`, for a vertex strictly inside a base edge.
-bool onBaseEdge(const BaseDomain& domain, const BaseLocation& at, EdgePlace& place)
+bool onBaseEdge(const BaseDomain& domain, const SurfacePoint& at, EdgePlace& place)
 {
-  const auto& c = at.coordinates;
+  const auto& c = at.weight;
   if (std::count(c.begin(), c.end(), 0.0) != 1)
     return false;
   const Triangle& corners = domain.mesh.triangles[at.triangle];
@@ -214,13 +214,14 @@ std::pair<double, double> edgeWeights(const BaseDomain& domain, int patch, const
 }
 
 /// The place `along` the base edge of `place`, as a location in the
-/// vertex's own base triangle `home`.
-BaseLocation alongEdge(int home, const EdgePlace& place, double along)
+/// vertex's own base triangle, that of `home`.
+SurfacePoint alongEdge(const SurfacePoint& home, const EdgePlace& place, double along)
 {
-  BaseLocation at;
-  at.triangle = home;
-  at.coordinates[place.indexA] = 1.0 - along;
-  at.coordinates[place.indexB] = along;
+  SurfacePoint at;
+  at.triangle = home.triangle;
+  at.vertex = home.vertex;
+  at.weight[place.indexA] = 1.0 - along;
+  at.weight[place.indexB] = along;
   return at;
 }
 
@@ -239,7 +240,7 @@ Status checkInput(const BaseDomain& domain, const std::vector<const Parameterize
   const int patchCount = domain.mesh.triangleCount();
   const auto outside = [&](int p) { return p < 0 || p >= patchCount; };
   if (std::any_of(remesh.patchOfTriangle.begin(), remesh.patchOfTriangle.end(), outside) ||
-    std::any_of(remesh.locations.begin(), remesh.locations.end(), [&](const BaseLocation& at) { return outside(at.triangle); }))
+    std::any_of(remesh.locations.begin(), remesh.locations.end(), [&](const SurfacePoint& at) { return outside(at.triangle); }))
     return Status::error("the remesh does not belong to this base domain (it names a base triangle it does not have)");
   for (std::size_t t = 0; t < remesh.triangles.size(); ++t)
     for (int v : remesh.triangles[t])
@@ -267,10 +268,10 @@ std::uint64_t fingerprint(const SemiRegularMesh& remesh, const SampleRelaxationO
   };
   add(remesh.triangles.data(), remesh.triangles.size() * sizeof(Triangle));
   add(remesh.patchOfTriangle.data(), remesh.patchOfTriangle.size() * sizeof(int));
-  for (const BaseLocation& at : remesh.locations)
+  for (const SurfacePoint& at : remesh.locations)
   {
     add(&at.triangle, sizeof at.triangle);
-    add(at.coordinates.data(), sizeof at.coordinates);
+    add(at.weight.data(), sizeof at.weight);
   }
   add(&options.iterations, sizeof options.iterations);
   add(&options.step, sizeof options.step);
@@ -365,9 +366,9 @@ void slideAlongBaseEdges(const BaseDomain& domain, SemiRegularMesh& remesh,
     if (!(ringWeight > 0.0))
       continue;
     const double target = ringAlong / ringWeight;
-    BaseLocation& at = remesh.locations[v];
+    SurfacePoint& at = remesh.locations[v];
     // Placed in each base triangle of its ring, or back where it was in all.
-    const auto placeEverywhere = [&](const BaseLocation& where, bool check) {
+    const auto placeEverywhere = [&](const SurfacePoint& where, bool check) {
       std::vector<int> placedIn;
       for (int r : ringOf[v])
       {
@@ -384,7 +385,7 @@ void slideAlongBaseEdges(const BaseDomain& domain, SemiRegularMesh& remesh,
     };
     const double fraction = firstSafeFraction(step, [&](double f) {
       const double along = place.along + f * (target - place.along);
-      if (along > 0.0 && along < 1.0 && placeEverywhere(alongEdge(at.triangle, place, along), true))
+      if (along > 0.0 && along < 1.0 && placeEverywhere(alongEdge(at, place, along), true))
         return true;
       placeEverywhere(at, false);
       return false;
@@ -392,7 +393,7 @@ void slideAlongBaseEdges(const BaseDomain& domain, SemiRegularMesh& remesh,
     if (fraction > 0.0)
     {
       const double along = place.along + fraction * (target - place.along);
-      at = alongEdge(at.triangle, place, along);
+      at = alongEdge(at, place, along);
       record(std::abs(along - place.along), done);
     }
   }

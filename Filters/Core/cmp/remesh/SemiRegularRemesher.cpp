@@ -29,12 +29,12 @@ std::vector<std::vector<int>> trianglesAroundBaseVertices(const BaseDomain& doma
 
 /// The same point expressed in the lowest-numbered base triangle that
 /// contains it, so that every model and every level agree on it.
-BaseLocation canonical(const BaseDomain& domain, const std::vector<std::vector<int>>& around, const BaseLocation& at)
+SurfacePoint canonical(const BaseDomain& domain, const std::vector<std::vector<int>>& around, const SurfacePoint& at)
 {
   const Triangle& tri = domain.mesh.triangles[at.triangle];
   int support = -1, count = 0;
   for (int k = 0; k < 3; ++k)
-    if (at.coordinates[k] != 0.0)
+    if (at.weight[k] != 0.0)
     {
       support = tri[k];
       ++count;
@@ -43,8 +43,8 @@ BaseLocation canonical(const BaseDomain& domain, const std::vector<std::vector<i
     return at;
   for (int candidate : around[support]) // increasing order
   {
-    BaseLocation moved{ candidate, {} };
-    if (coordinatesInTriangle(domain, at.triangle, at.coordinates, candidate, moved.coordinates))
+    SurfacePoint moved = SurfacePoint::inTriangle(domain.mesh, candidate, {});
+    if (coordinatesInTriangle(domain, at.triangle, at.weight, candidate, moved.weight))
       return moved;
   }
   return at;
@@ -57,28 +57,29 @@ std::uint64_t edgeKey(int a, int b)
 
 /// The dyadic midpoint of two located vertices, computed in `patch` (exact,
 /// so zeros stay zeros) and expressed canonically.
-BaseLocation midpointLocation(const BaseDomain& domain, const std::vector<std::vector<int>>& around,
-  const BaseLocation& a, const BaseLocation& b, int patch)
+SurfacePoint midpointLocation(const BaseDomain& domain, const std::vector<std::vector<int>>& around,
+  const SurfacePoint& a, const SurfacePoint& b, int patch)
 {
-  BaseLocation at{ patch, {} }, la, lb;
-  coordinatesInTriangle(domain, a.triangle, a.coordinates, patch, la.coordinates);
-  coordinatesInTriangle(domain, b.triangle, b.coordinates, patch, lb.coordinates);
+  SurfacePoint at = SurfacePoint::inTriangle(domain.mesh, patch, {});
+  std::array<double, 3> la{}, lb{};
+  coordinatesInTriangle(domain, a.triangle, a.weight, patch, la);
+  coordinatesInTriangle(domain, b.triangle, b.weight, patch, lb);
   for (int k = 0; k < 3; ++k)
-    at.coordinates[k] = 0.5 * (la.coordinates[k] + lb.coordinates[k]);
+    at.weight[k] = 0.5 * (la[k] + lb[k]);
   return canonical(domain, around, at);
 }
 
 /// Every base vertex at its lowest base triangle, stored at the remesh
 /// vertex of its feature.
-std::vector<BaseLocation> baseVertexLocations(const BaseDomain& domain, const std::vector<std::vector<int>>& around)
+std::vector<SurfacePoint> baseVertexLocations(const BaseDomain& domain, const std::vector<std::vector<int>>& around)
 {
-  std::vector<BaseLocation> locations(domain.mesh.vertexCount());
+  std::vector<SurfacePoint> locations(domain.mesh.vertexCount());
   for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
   {
     const int t = around[bv].front();
-    BaseLocation at{ t, { 0.0, 0.0, 0.0 } };
+    SurfacePoint at = SurfacePoint::inTriangle(domain.mesh, t, { 0.0, 0.0, 0.0 });
     const Triangle& tri = domain.mesh.triangles[t];
-    at.coordinates[std::find(tri.begin(), tri.end(), bv) - tri.begin()] = 1.0;
+    at.weight[std::find(tri.begin(), tri.end(), bv) - tri.begin()] = 1.0;
     locations[domain.featureIds[bv]] = at;
   }
   return locations;
@@ -96,10 +97,10 @@ std::vector<Triangle> baseTrianglesAsRemeshVertices(const BaseDomain& domain)
 
 } // namespace
 
-bool locationInBaseTriangle(const BaseDomain& domain, const BaseLocation& at, int triangle, Vec2& result)
+bool locationInBaseTriangle(const BaseDomain& domain, const SurfacePoint& at, int triangle, Vec2& result)
 {
   std::array<double, 3> c{};
-  if (!coordinatesInTriangle(domain, at.triangle, at.coordinates, triangle, c))
+  if (!coordinatesInTriangle(domain, at.triangle, at.weight, triangle, c))
     return false;
   result = Vec2(c[1], c[2]);
   return true;
@@ -196,18 +197,19 @@ public:
   }
 
   const std::vector<Node>& nodes() const { return nodes_; }
-  const std::vector<BaseLocation>& locations() const { return locations_; }
+  const std::vector<SurfacePoint>& locations() const { return locations_; }
   int rootCount() const { return domain_.mesh.triangleCount(); }
 
   /// The corners of node n as locations in its base triangle.
-  std::array<BaseLocation, 3> cornerLocations(int n) const
+  std::array<SurfacePoint, 3> cornerLocations(int n) const
   {
-    std::array<BaseLocation, 3> corners;
+    std::array<SurfacePoint, 3> corners;
     for (int k = 0; k < 3; ++k)
     {
-      const BaseLocation& at = locations_[nodes_[n].corner[k]];
+      const SurfacePoint& at = locations_[nodes_[n].corner[k]];
       corners[k].triangle = nodes_[n].patch;
-      coordinatesInTriangle(domain_, at.triangle, at.coordinates, nodes_[n].patch, corners[k].coordinates);
+      corners[k].vertex = domain_.mesh.triangles[nodes_[n].patch];
+      coordinatesInTriangle(domain_, at.triangle, at.weight, nodes_[n].patch, corners[k].weight);
     }
     return corners;
   }
@@ -267,7 +269,7 @@ private:
 
   const BaseDomain& domain_;
   const std::vector<std::vector<int>>& around_;
-  std::vector<BaseLocation> locations_;
+  std::vector<SurfacePoint> locations_;
   std::vector<Node> nodes_;
   std::unordered_map<std::uint64_t, int> midpointOf_;
 };
@@ -438,20 +440,20 @@ Status ParameterizedSurface::build(
   return {};
 }
 
-Status ParameterizedSurface::locate(const BaseLocation& at, SurfaceSample& sample) const
+Status ParameterizedSurface::locate(const SurfacePoint& at, SurfacePoint& sample) const
 {
   if (!index_)
     return Status::error("the parameterized surface was not built");
   const Triangle& base = domain_->mesh.triangles[at.triangle];
   for (int k = 0; k < 3; ++k)
-    if (at.coordinates[k] == 1.0) // a base vertex: its landmark exactly
+    if (at.weight[k] == 1.0) // a base vertex: its landmark exactly
     {
       sample = { { net_->landmarkVertex[base[k]], -1, -1 }, { 1.0, 0.0, 0.0 } };
       return {};
     }
   int found = -1;
   std::array<double, 3> w{};
-  if (!index_->grids[at.triangle].locate(Vec2(at.coordinates[1], at.coordinates[2]), found, w))
+  if (!index_->grids[at.triangle].locate(Vec2(at.weight[1], at.weight[2]), found, w))
     return Status::error("a base location lies in no triangle of patch " + std::to_string(at.triangle));
   double sum = 0.0;
   for (double& x : w)
@@ -477,14 +479,14 @@ void ParameterizedSurface::forEachTriangleImage(
     }
 }
 
-Vec3 ParameterizedSurface::position(const SurfaceSample& sample) const
+Vec3 ParameterizedSurface::position(const SurfacePoint& sample) const
 {
   return samplePosition(net_->mesh, sample);
 }
 
 SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& models, double tolerance)
 {
-  return [models, tolerance](const std::array<BaseLocation, 3>& corners, int)
+  return [models, tolerance](const std::array<SurfacePoint, 3>& corners, int)
   {
     // The points of the triangle's next two 1-to-4 refinements (its
     // barycentric lattice of order 4 without the corners), in the corners'
@@ -503,18 +505,19 @@ SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& mode
         mix[made++] = { static_cast<double>(i) / kOrder, static_cast<double>(j) / kOrder,
           static_cast<double>(k) / kOrder };
       }
-    std::array<BaseLocation, kProbes> probes;
+    std::array<SurfacePoint, kProbes> probes;
     for (int i = 0; i < kProbes; ++i)
     {
       probes[i].triangle = corners[0].triangle;
+      probes[i].vertex = corners[0].vertex;
       for (int c = 0; c < 3; ++c)
         for (int k = 0; k < 3; ++k)
-          probes[i].coordinates[k] += mix[i][c] * corners[c].coordinates[k];
+          probes[i].weight[k] += mix[i][c] * corners[c].weight[k];
     }
     for (const ParameterizedSurface* model : models)
     {
       std::array<Vec3, 3> at;
-      SurfaceSample sample;
+      SurfacePoint sample;
       for (int c = 0; c < 3; ++c)
       {
         if (!model->locate(corners[c], sample).ok())
@@ -536,7 +539,7 @@ SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& mode
 }
 
 Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const BaseDomain& domain,
-  const PatchParameterization& parameterization, std::vector<SurfaceSample>& samples)
+  const PatchParameterization& parameterization, std::vector<SurfacePoint>& samples)
 {
   ParameterizedSurface surface;
   if (Status s = surface.build(net, domain, parameterization); !s.ok())
@@ -545,16 +548,16 @@ Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const
 }
 
 Status placeOnSurface(
-  const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfaceSample>& samples)
+  const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfacePoint>& samples)
 {
-  samples.assign(remesh.vertexCount(), SurfaceSample{});
+  samples.assign(remesh.vertexCount(), SurfacePoint{});
   for (int v = 0; v < remesh.vertexCount(); ++v)
     if (Status s = surface.locate(remesh.locations[v], samples[v]); !s.ok())
       return Status::error("remesh vertex " + std::to_string(v) + ": " + s.message());
   return {};
 }
 
-Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample)
+Vec3 samplePosition(const EditableMesh& mesh, const SurfacePoint& sample)
 {
   Vec3 p = Vec3::Zero();
   for (int k = 0; k < 3; ++k)
@@ -563,11 +566,11 @@ Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample)
   return p;
 }
 
-std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfaceSample>& samples)
+std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfacePoint>& samples)
 {
   std::vector<Vec3> positions;
   positions.reserve(samples.size());
-  for (const SurfaceSample& s : samples)
+  for (const SurfacePoint& s : samples)
     positions.push_back(samplePosition(net.mesh, s));
   return positions;
 }

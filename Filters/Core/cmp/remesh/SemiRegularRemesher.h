@@ -8,6 +8,7 @@
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/map/PatchParameterization.h>
 #include <cmp/mesh/Status.h>
+#include <cmp/mesh/SurfacePoint.h>
 #include <cmp/mesh/TriangleMesh.h>
 
 #include <array>
@@ -19,18 +20,14 @@
 namespace cmp
 {
 
-/// \brief A place in the base domain: a base triangle and barycentric
-///        coordinates in the order of its vertices.
-struct BaseLocation
-{
-  int triangle = -1;                                  ///< Base triangle.
-  std::array<double, 3> coordinates{ { 0.0, 0.0, 0.0 } }; ///< Barycentric coordinates.
-};
+/// A place in the base domain is a `SurfacePoint` of `L0`'s mesh made by
+/// `SurfacePoint::inTriangle()`: a base triangle, its three corners and the
+/// place's barycentric coordinates in their order.
 
 /// \brief `at` in barycentric coordinates (c1, c2) of base triangle
 ///        `triangle` (its own, or one sharing the vertices `at` lies on);
 ///        false, `result` untouched, if `at` is not on that triangle.
-bool locationInBaseTriangle(const BaseDomain& domain, const BaseLocation& at, int triangle, Vec2& result);
+bool locationInBaseTriangle(const BaseDomain& domain, const SurfacePoint& at, int triangle, Vec2& result);
 
 /// \brief The semi-regular connectivity shared by every model of a
 ///        collection.
@@ -48,7 +45,7 @@ struct SemiRegularMesh
   int level = 0;                        ///< Quadrisections applied to L0.
   std::vector<Triangle> triangles;      ///< Counter-clockwise triangles.
   std::vector<int> patchOfTriangle;     ///< Base triangle of each triangle.
-  std::vector<BaseLocation> locations;  ///< Base-domain place of each vertex.
+  std::vector<SurfacePoint> locations;  ///< Base-domain place of each vertex.
   std::vector<int> levelOfVertex;       ///< Level at which each vertex appears (0 for base vertices).
   /// \brief Level of each triangle: `level` everywhere for uniform
   ///        refinement; for adaptive refinement the depth of the leaf it
@@ -83,7 +80,7 @@ Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh
 
 /// \brief Decides whether a triangle of an adaptive remesh is split: gets
 ///        its corners as locations in its base triangle and its level.
-using SplitRule = std::function<bool(const std::array<BaseLocation, 3>& corners, int level)>;
+using SplitRule = std::function<bool(const std::array<SurfacePoint, 3>& corners, int level)>;
 
 /// \brief Builds an adaptive semi-regular connectivity: triangles are
 ///        quadrisected while `needsSplit` says so, up to `maximumLevel`;
@@ -102,15 +99,6 @@ using SplitRule = std::function<bool(const std::array<BaseLocation, 3>& corners,
 Status buildAdaptiveSemiRegularMesh(
   const BaseDomain& domain, int maximumLevel, const SplitRule& needsSplit, SemiRegularMesh& out);
 
-/// \brief Where one remesh vertex lands on a model: a convex combination of
-///        three vertices of the parameterized surface.
-struct SurfaceSample
-{
-  std::array<int, 3> vertex{ { -1, -1, -1 } };        ///< Surface vertices.
-  std::array<double, 3> weight{ { 0.0, 0.0, 0.0 } };  ///< Their weights (sum 1).
-  int triangle = -1; ///< Surface triangle holding the sample (-1 at a landmark).
-};
-
 /// \brief One parameterized model, ready to answer where a base-domain
 ///        location lies on it: a uniform grid per patch over the images
 ///        of its triangles, built once.
@@ -124,10 +112,10 @@ public:
   /// \brief The surface point at base location `at`: the landmark itself
   ///        at a base vertex, otherwise the triangle of `at`'s patch whose
   ///        image contains it, with barycentric weights.
-  Status locate(const BaseLocation& at, SurfaceSample& sample) const;
+  Status locate(const SurfacePoint& at, SurfacePoint& sample) const;
 
   /// \brief The position of `sample` on the surface.
-  Vec3 position(const SurfaceSample& sample) const;
+  Vec3 position(const SurfacePoint& sample) const;
 
   /// \brief Length of the diagonal of the surface's bounding box.
   double boundingBoxDiagonal() const { return diagonal_; }
@@ -172,17 +160,17 @@ SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& mode
 ///        `parameterization` are the straightener's and the per-patch
 ///        map's output for the same surface.
 Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const BaseDomain& domain,
-  const PatchParameterization& parameterization, std::vector<SurfaceSample>& samples);
+  const PatchParameterization& parameterization, std::vector<SurfacePoint>& samples);
 
 /// \brief Places every vertex of `remesh` on a model already indexed.
 Status placeOnSurface(
-  const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfaceSample>& samples);
+  const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfacePoint>& samples);
 
 /// \brief The position of `sample` on `mesh`: its weights on its (up to
 ///        three) vertices.
-Vec3 samplePosition(const EditableMesh& mesh, const SurfaceSample& sample);
+Vec3 samplePosition(const EditableMesh& mesh, const SurfacePoint& sample);
 
 /// \brief The positions of `samples` on the mesh of `net`.
-std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfaceSample>& samples);
+std::vector<Vec3> samplePositions(const TracedNet& net, const std::vector<SurfacePoint>& samples);
 
 } // namespace cmp
