@@ -25,7 +25,12 @@ struct BaseDomainMesh
   std::vector<int> patchOfTriangle;    ///< Base triangle of every triangle.
 };
 
-/// \brief The source point under every target vertex.
+/// \brief The source point under every target vertex (paper §3, "Transfer
+///        of Textures": direct parametric mapping).
+/// \pre `source` is built over the base domain `target`'s locations are
+///      places in.
+/// Fails (Status, "target point V: ...") where
+/// `ParameterizedSurface::locate()` fails.
 Status locateVertices(
   const ParameterizedSurface& source, const BaseDomainMesh& target, std::vector<SurfacePoint>& samples);
 
@@ -35,8 +40,12 @@ Status locateVertices(
 ///        towards the triangle's centroid in its patch before it is
 ///        located. Across a texture seam of the source the two sides of a
 ///        target vertex then read the texture coordinates of their own side.
-///        A corner's base location must lie in its triangle's patch or on
-///        that patch's boundary.
+///        Per-corner lookup for texture seams is beyond the paper.
+/// \pre `source` is built over `domain`.
+/// Fails (Status), naming the triangle, when `target` has not one patch
+/// per triangle, a triangle uses a point without a base location, a
+/// corner's base location lies neither in its triangle's patch nor on that
+/// patch's boundary, or a nudged corner cannot be located on `source`.
 Status locateCorners(const ParameterizedSurface& source, const BaseDomain& domain, const BaseDomainMesh& target,
   std::vector<SurfacePoint>& corners, double inset = 1e-6);
 

@@ -49,12 +49,22 @@ enum class DetailScaling
 /// (`DetailFrame::Local`) are the right choice for positions, since the
 /// details then sit on whichever coarse shape they are synthesized on.
 /// Either way, all weights 0 give A and all weights 1 give B exactly.
-/// `out` may be `a` or `b`.
+/// `out` may be `a` or `b`. Paper §3 ("Transfer of Wavelet Details",
+/// Figure 13, and its scheduled morphs); the size scaling is ours.
+///
+/// Fails (Status), leaving `out` untouched, when the two sets differ in
+/// levels, vertices, columns or frame, are empty or not one row per finest
+/// vertex, hold a non-finite value, the schedule has not J + 1 finite
+/// weights, or (`RelativeToCoarseSize`) a model's coarsest values are all
+/// equal.
 Status transferDetails(const WaveletCoefficients& a, const WaveletCoefficients& b, const DetailSchedule& weightOfB,
   WaveletCoefficients& out, DetailScaling scaling = DetailScaling::RelativeToCoarseSize);
 
 /// \brief The whole transfer on values (V_J rows each): analyzes `a` and
 ///        `b` with `frame`, blends with `weightOfB` and synthesizes.
+/// Fails (Status) where `analyze()` fails ("model A: ...", "model B: ...":
+/// a transform not built, values of the wrong size or not finite), where
+/// the blend above fails, or where `synthesize()` fails.
 Status transferDetails(const LoopWaveletTransform& transform, const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
   const DetailSchedule& weightOfB, Eigen::MatrixXd& out, DetailFrame frame = DetailFrame::Local,
   DetailScaling scaling = DetailScaling::RelativeToCoarseSize);

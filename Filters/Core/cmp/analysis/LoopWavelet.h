@@ -66,13 +66,18 @@ struct WaveletCoefficients
 /// control mesh of the next finer one, so coarse levels are a smoothed,
 /// low-pass version of the input, not a subsampling. Both directions are
 /// linear, cost O(vertices) and reconstruct exactly up to rounding. The
-/// lifting steps are documented in LoopWavelet.cpp.
+/// lifting steps are documented in LoopWavelet.cpp. Paper §3: the
+/// "Loop-based wavelets" of its detail transfer (its reference [5]).
 class LoopWaveletTransform
 {
 public:
   /// \brief Precomputes the lifting stencils of every level of `mesh`, which
   ///        must be uniform: `buildSemiRegularMesh()` output, not an
-  ///        adaptive remesh. Fails on any other connectivity.
+  ///        adaptive remesh.
+  /// Fails (Status) on any other connectivity: a level out of range, a
+  /// triangle count that is not a multiple of 4^level, triangles of several
+  /// levels, vertices not numbered level by level, or levels that are not
+  /// quadrisections of a closed coarser mesh. The transform is then empty.
   Status build(const SemiRegularMesh& mesh);
 
   /// \brief The finest level J (-1 before a successful `build()`).
@@ -84,14 +89,20 @@ public:
 
   /// \brief Splits `values` (V_J rows) into coarsest values and details.
   ///        `DetailFrame::Local` needs exactly 3 columns.
+  /// Fails (Status) when the transform is not built, `values` has not V_J
+  /// rows, has no column (or not 3 for local frames) or a non-finite entry.
   Status analyze(const Eigen::MatrixXd& values, DetailFrame frame, WaveletCoefficients& out) const;
 
   /// \brief Rebuilds the finest-level values from `coefficients`.
+  /// Fails (Status) when the transform is not built, or `coefficients` are
+  /// not of its levels and vertices (V_J rows, at least one column, 3 for
+  /// local frames) or hold a non-finite entry.
   Status synthesize(const WaveletCoefficients& coefficients, Eigen::MatrixXd& values) const;
 
   /// \brief Rebuilds the values of level `l` (V_l rows) from the coarsest
   ///        values and the details of levels 1..l: the level-l
-  ///        approximation, the mesh to show for that level.
+  ///        approximation, the mesh to show for that level. Fails as the
+  ///        finest-level `synthesize()` does, and on `l` outside 0..J.
   Status synthesize(const WaveletCoefficients& coefficients, int l, Eigen::MatrixXd& values) const;
 
   LoopWaveletTransform();

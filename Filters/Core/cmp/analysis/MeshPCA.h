@@ -63,21 +63,27 @@ struct MeshPCA
 /// rigid motion of the collection.
 ///
 /// Models are taken as they are; align them first with `alignShapes()`
-/// (the paper aligns them rigidly and scales them to equal volume). Fails,
-/// on every rank with the same message, with fewer than two models and on
-/// the input errors of `describeCollection()`.
+/// (the paper aligns them rigidly and scales them to equal volume). Paper
+/// §3, "Principal Mesh Components"; the rules for dropping and orienting
+/// modes are ours.
+///
+/// \pre Vertex k of every model corresponds to vertex k of every other
+///      (remeshes of one collection, `ShapeList`).
+/// Fails (Status), on every rank with the same message, with fewer than two
+/// models and on the input errors of `describeCollection()`.
 Status computeMeshPCA(
   const ShapeList& localModels, int requestedModes, Communicator& communicator, MeshPCA& out);
 
-/// \brief `computeMeshPCA()` of a collection held by this process alone.
+/// \brief `computeMeshPCA()` of a collection held by this process alone:
+///        same preconditions and failures.
 Status computeMeshPCA(const ShapeList& models, int requestedModes, MeshPCA& out);
 
 /// \brief The shape `mean + sum_k modeFactors[k] * coefficients[k] * mode k`.
 ///
 /// With every factor 1 it rebuilds the shape whose coefficients are given;
 /// the paper's Figure 11 triples one mode (factor 3 on it, 1 elsewhere) or
-/// doubles all modes (factor 2 everywhere). Fails unless both vectors have
-/// one finite entry per mode.
+/// doubles all modes (factor 2 everywhere). Fails (Status) unless both
+/// vectors have one finite entry per mode.
 Status synthesizeShape(const MeshPCA& pca, const Eigen::VectorXd& coefficients, const Eigen::VectorXd& modeFactors,
   std::vector<Vec3>& out);
 

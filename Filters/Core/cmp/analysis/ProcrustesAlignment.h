@@ -84,13 +84,22 @@ struct ShapeAlignment
 /// `triangles` (the shared connectivity, counter-clockwise seen from
 /// outside) are only used for the volumes of `EqualVolume`; then every
 /// model must enclose a volume of the same sign that is not negligible
-/// against its size. Fails, on every rank with the same message, on the
-/// input errors of `describeCollection()`, on a triangle with a vertex
-/// index out of range, and on such volumes.
+/// against its size. Paper §3 (models "aligned through rigid body motion
+/// and scaled to equal volume"); generalised Procrustes is our choice of
+/// how.
+///
+/// \pre Vertex k of every model corresponds to vertex k of every other.
+/// Fails (Status), naming the problem, on options out of range (a
+/// tolerance that is not a positive number, fewer than one iteration), and,
+/// on every rank with the same message, on the input errors of
+/// `describeCollection()`, on a triangle with a vertex index out of range,
+/// on such volumes and, with `UnitCentroidSize`, on a model whose vertices
+/// all lie at one point.
 Status alignShapes(const ShapeList& localModels, const std::vector<Triangle>& triangles,
   const AlignmentOptions& options, Communicator& communicator, ShapeAlignment& out);
 
-/// \brief `alignShapes()` of a collection held by this process alone.
+/// \brief `alignShapes()` of a collection held by this process alone:
+///        same preconditions and failures.
 Status alignShapes(const ShapeList& models, const std::vector<Triangle>& triangles,
   const AlignmentOptions& options, ShapeAlignment& out);
 

@@ -30,14 +30,18 @@ struct ShapeBlend
 /// The weights must sum to one (within 1e-9), so that the blend does not
 /// depend on where the models are placed; any of them may be negative or
 /// above one. Pass the aligned models of `alignShapes()` to blend shapes
-/// rather than positions. Fails, on every rank with the same message, on
-/// the input errors of `describeCollection()`, when the number of weights
-/// is not the number of models, when a weight is not finite, or when their
-/// sum is not one (the message gives the sum).
+/// rather than positions. Paper §3, "Shape Blending" (Figure 14).
+///
+/// \pre Vertex k of every model corresponds to vertex k of every other.
+/// Fails (Status), on every rank with the same message, on the input errors
+/// of `describeCollection()`, when the number of weights is not the number
+/// of models, when a weight is not finite, or when their sum is not one
+/// (the message gives the sum).
 Status blendShapes(
   const ShapeList& localModels, const std::vector<double>& weights, Communicator& communicator, ShapeBlend& out);
 
-/// \brief `blendShapes()` of a collection held by this process alone.
+/// \brief `blendShapes()` of a collection held by this process alone:
+///        same preconditions and failures.
 Status blendShapes(const ShapeList& models, const std::vector<double>& weights, ShapeBlend& out);
 
 } // namespace cmp

@@ -37,9 +37,12 @@ struct CollectionLayout
 
 /// \brief Checks the models of every rank and numbers them. Collective.
 ///
-/// Fails on every rank, with the same message naming the global model, when
-/// the collection has no model, when a model has no vertex or another vertex
-/// count than the first model, or when a coordinate is not finite.
+/// \pre Every rank of `communicator` calls it, in the same order as its
+///      other collective calls.
+/// Fails (Status) on every rank, with the same message naming the global
+/// model, when the collection has no model, when a model has no vertex or
+/// another vertex count than the first model, or when a coordinate is not
+/// finite.
 Status describeCollection(const ShapeList& localModels, Communicator& communicator, CollectionLayout& out);
 
 } // namespace cmp

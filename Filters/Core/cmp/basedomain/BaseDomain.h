@@ -24,6 +24,9 @@ struct BaseDomain
 /// \brief Checks that `domain` is a closed, manifold, oriented, connected
 ///        genus-0 triangulation whose `featureIds` are 0..F-1, each once, and
 ///        (when `landmarkCount >= 0`) that F equals the surface's landmark count.
+///        Fails (Status), naming the first check that does not hold. The
+///        positions are not checked: only the connectivity is `L0` (paper
+///        §2, "Basic Setup").
 Status checkBaseDomain(const BaseDomain& domain, int landmarkCount = -1);
 
 /// \brief Number of distinct edges of a closed triangulation (3T/2).

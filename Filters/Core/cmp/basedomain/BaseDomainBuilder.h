@@ -41,9 +41,14 @@ struct BaseDomainBuilderReport
 /// follows the surface. Among valid collapses it prefers those that fold no
 /// triangle over and leave well-shaped triangles close to the surface
 /// (quadric error plus a shape term). Base vertex f is landmark f, placed at
-/// its surface position. Fails, with a message, on a surface that is not a
-/// closed genus-0 manifold, on invalid landmarks, or with fewer than 4
-/// landmarks. O(n log n).
+/// its surface position. O(n log n). Paper §2 lets the base domain be given
+/// or "found automatically"; this decimation is our own (beyond the paper).
+///
+/// Fails (Status), naming the problem, on a surface that fails
+/// `checkSurface()` (not a closed genus-0 manifold with sound geometry), on
+/// invalid landmarks (`validateLandmarks()`), with fewer than 4 landmarks,
+/// and when no remaining vertex can be removed without breaking the
+/// topology (not expected: folding collapses and flips are tried first).
 Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmarks, BaseDomain& domain,
   const BaseDomainBuilderOptions& options = {}, BaseDomainBuilderReport* report = nullptr);
 

@@ -3,7 +3,8 @@
 /// \brief Landmark files and the `FeatureId` convention.
 ///
 /// A landmark set is the list of mesh vertices that carry features
-/// 0..F-1, in feature order. On a surface it is stored as the point array
+/// 0..F-1, in feature order: the paper's F feature points (§2, "Basic
+/// Setup"). On a surface it is stored as the point array
 /// `FeatureId`: -1 everywhere except at the F landmark vertices.
 
 #include <cmp/io/MeshFile.h>
@@ -31,7 +32,15 @@ using LandmarkList = std::vector<int>;
 ///
 /// Ids are 0-based indices into the file's own point list; `fileToMeshPoint`
 /// (from `MeshFileData`, may be empty for identity) maps them to the welded
-/// mesh. `#` starts a comment. Checks that ids are in range and distinct.
+/// mesh. `#` starts a comment.
+///
+/// \pre `fileToMeshPoint` is empty or maps every file point to a vertex of
+///      `mesh`.
+/// Fails (Status), naming the file and line, on a missing, unreadable or
+/// binary file, a malformed line or a field too many, an id out of range, a
+/// `.vts` position farther than 0.1% of the bounding-box diagonal from its
+/// vertex, a `.csv` position farther than 5% of it from every vertex, a
+/// file without landmarks, and two features on one vertex.
 Status readLandmarkFile(const std::string& path, const TriangleMesh& mesh, const std::vector<int>& fileToMeshPoint,
   LandmarkList& landmarks);
 
@@ -43,23 +52,32 @@ Status readLandmarkFile(const std::string& path, const TriangleMesh& mesh, const
 /// `fileToMeshPoint` (may be empty for identity) is the same map the reader
 /// takes: ids are written as the first file point of each mesh vertex, so
 /// the file pairs with the original mesh file even when points were welded.
+/// Fails (Status) on an empty or invalid landmark list
+/// (`validateLandmarks()`) and on a landmark vertex no file point maps to.
 Status formatLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
   const std::vector<int>& fileToMeshPoint, std::string& text);
 
-/// \brief Writes `formatLandmarkFile`'s text to `path`.
+/// \brief Writes `formatLandmarkFile`'s text to `path`. Fails (Status,
+///        "PATH: ...") where `formatLandmarkFile` fails and when the file
+///        cannot be written.
 Status writeLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
   const std::vector<int>& fileToMeshPoint);
 
 /// \brief Checks that every landmark is a valid vertex, no vertex carries two
 ///        features, and (when `expectedCount >= 0`) that there are exactly
-///        `expectedCount` of them.
+///        `expectedCount` of them. Fails (Status) on the first of these
+///        that does not hold, naming the landmark.
 Status validateLandmarks(const LandmarkList& landmarks, int vertexCount, int expectedCount = -1);
 
 /// \brief The per-vertex `FeatureId` values for a landmark list.
+/// \pre `landmarks` pass `validateLandmarks(landmarks, vertexCount)`.
 std::vector<int> featureIdsOf(const LandmarkList& landmarks, int vertexCount);
 
 /// \brief Reads landmarks back from per-vertex `FeatureId` values, checking
 ///        that they are -1 or 0..F-1 and that each feature occurs exactly once.
+///        Fails (Status) on a value below -1 or not below the vertex
+///        count, on no landmark at all, and on a feature that is missing or
+///        on two vertices.
 Status landmarksFromFeatureIds(const std::vector<int>& featureIds, LandmarkList& landmarks);
 
 } // namespace cmp

@@ -49,16 +49,21 @@ struct MeshFileData
 
 /// \brief Reads an OFF file (`OFF`, counts, points, polygons).
 ///
-/// Fails on a count the rest of the file cannot hold (a point takes at least
-/// six bytes, a face eight), on a missing or malformed record, and on an
-/// index out of range. When the header claims more points than the file
-/// lists, so that faces were read as points, the message says the points
-/// are missing.
+/// Fails (Status) on a missing, unreadable, binary or empty file, a first
+/// line other than `OFF`, a count the rest of the file cannot hold (a point
+/// takes at least six bytes, a face eight), a missing or malformed record,
+/// and an index out of range. When the header claims more points than the
+/// file lists, so that faces were read as points, the message says the
+/// points are missing.
 Status readOFF(const std::string& path, MeshFileData& out);
 
 /// \brief Reads the `v`, `vt` and `f` records of an OBJ file.
 ///
-/// OBJ has no counts: memory grows with the records actually read.
+/// OBJ has no counts: memory grows with the records actually read. Fails
+/// (Status), naming the file and line, on a missing, unreadable or binary
+/// file, a `v` or `vt` record without its coordinates, a face with fewer
+/// than three vertices or referring to a vertex or texture coordinate not
+/// defined, and a file with no `v` or `f` record.
 Status readOBJ(const std::string& path, MeshFileData& out);
 
 /// \brief Reads a PLY file: ASCII, binary little or big endian, version 1.0.
@@ -72,14 +77,15 @@ Status readOBJ(const std::string& path, MeshFileData& out);
 /// `triangleProperties`; list properties and other elements are read by
 /// their declared types and skipped.
 ///
-/// Fails, naming the file and the header or body line (the byte offset in a
-/// binary file), on: a malformed header (unknown keyword or type, no
-/// `end_header`, a property outside an element, duplicate names); a missing
-/// `vertex` element or `x`, `y`, `z`; a missing `face` element or index
-/// list; element counts the rest of the file cannot hold; a record with too
-/// few or too many values, a value that is not of its declared type or out
-/// of its range; a list count the file cannot hold; a face with fewer than
-/// three vertices or an index out of range; data after the last element.
+/// Fails (Status), naming the file and the header or body line (the byte
+/// offset in a binary file), on: a missing or unreadable file; a malformed
+/// header (unknown keyword or type, no `end_header`, a property outside an
+/// element, duplicate names); a missing `vertex` element or `x`, `y`, `z`;
+/// a missing `face` element or index list; element counts the rest of the
+/// file cannot hold; a record with too few or too many values, a value that
+/// is not of its declared type or out of its range; a list count the file
+/// cannot hold; a face with fewer than three vertices or an index out of
+/// range; data after the last element.
 Status readPLY(const std::string& path, MeshFileData& out);
 
 /// \brief Merges points with identical coordinates and renumbers triangles.

@@ -32,11 +32,15 @@ struct CurveGap
 ///        `reach` × the bounding-box diagonal along it (at least half-way
 ///        if the curve is shorter than twice that), projected into the
 ///        landmark's tangent plane (normal: the area-weighted normal of its
-///        triangles). 360 / valence for curves spread evenly. On the
-///        SHREC'07 models with `L0` from 381, the remesh keeps folds after
-///        repair at landmarks above 250° (384's landmark 8: 347°), though
-///        not at every one (385's landmark 13: 274°, none by default).
-///        Linear in the mesh's vertices and the curves' lengths.
+///        triangles). 360 / valence for curves spread evenly; the wider
+///        the largest gap, the likelier a remesh keeps folds at that
+///        landmark (a rule of thumb, not a bound: the gaps measured against
+///        folds are in Documentation/filters/NetStraightener.md, field
+///        array `WidestCurveGap`). Beyond the paper: a diagnostic of the
+///        layout. Linear in the mesh's vertices and the curves' lengths.
+/// \pre `net` is a layout (`traceFeatureNet()`, `straightenNet()` or
+///      `layoutFromPatchIds()` output) whose curves start and end at its
+///      landmarks.
 std::vector<double> largestCurveGaps(const TracedNet& net, double reach = kCurveSpreadReach);
 
 /// \brief The largest of `largestCurveGaps()` and its base vertex.

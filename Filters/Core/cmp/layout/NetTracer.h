@@ -59,9 +59,19 @@ struct NetTracerReport
 /// curves got in the way. Before each curve the mesh is refined where two
 /// curves touch (every non-curve edge between occupied vertices is split), so
 /// the restricted brush fire always finds room and the proof of the paper
-/// applies. `surface` must pass `checkSurface()`; `landmarks[f]` is the
-/// vertex of feature f and `domain.featureIds` names the feature of each base
-/// vertex.
+/// applies. Paper §2.1 (restricted brush fire, spanning tree first) and
+/// §2.2 (harmonic F-vector ridge, priority queue, swirl detection); the
+/// edge splits replace the paper's "lanes", and the net is traced on the
+/// full surface, not on a simplified copy.
+///
+/// \pre `landmarks[f]` is the vertex of feature f of `surface`, and
+///      `domain.featureIds` names the feature of each base vertex.
+/// Fails (Status), naming the problem, when `surface` fails
+/// `checkSurface()`, the landmarks are invalid (`validateLandmarks()`) or
+/// not one per base vertex, `domain` fails `checkBaseDomain()` or the
+/// harmonic parameterization cannot be solved; messages starting with
+/// "internal error" (a curve not found, a net that cannot be labelled) are
+/// not expected after those checks.
 Status traceFeatureNet(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
   TracedNet& net, const NetTracerOptions& options = {}, NetTracerReport* report = nullptr);
 

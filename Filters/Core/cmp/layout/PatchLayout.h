@@ -60,17 +60,23 @@ struct TracedNet
 };
 
 /// \brief Tags every curve edge of `net.mesh` with its base edge and gives
-///        every triangle the base triangle on its side of the curves. Fails
-///        if two patches touch away from a curve or a triangle is enclosed by
-///        no curve.
+///        every triangle the base triangle on its side of the curves.
+/// \pre `net.curves`, `net.leftTriangle` and `net.rightTriangle` are set,
+///      one entry per base edge.
+/// Fails (Status, "internal error: ...") when a curve leaves the mesh
+/// edges, two patches touch away from a curve or a triangle is enclosed by
+/// no curve: the curves are then not a layout.
 Status labelPatches(TracedNet& net);
 
 /// \brief Gives every triangle reachable from the curves `seedEdges`
 ///        without crossing a curve the base triangle on its side of them.
-///        Triangles must start at -1 in `net.patchOfTriangle` and curve edges
-///        must be tagged. With `allowed`, the fill stays in the triangles
-///        marked there and fails if it would leave them. Fails if two patches
-///        meet away from a curve.
+///        With `allowed`, the fill stays in the triangles marked there.
+/// \pre `net.patchOfTriangle` has one entry per triangle, -1 for those to
+///      fill; the curve edges are tagged; every curve of `seedEdges` runs
+///      along mesh edges.
+/// Fails (Status, "internal error: ...") when a curve has another patch
+/// beside it already, two patches meet away from a curve, or the fill
+/// would leave `allowed`.
 Status floodFillPatches(TracedNet& net, const std::vector<int>& seedEdges, const std::vector<char>* allowed = nullptr);
 
 /// \brief Splits every untagged edge from one of `vertices` to a vertex
@@ -99,6 +105,13 @@ std::vector<double> arcLengthParameters(const EditableMesh& mesh, const std::vec
 ///        edge is the chain of mesh edges between its two patches, from one
 ///        landmark to the other. The labelling should pass
 ///        `validateLayout()`; anything else is reported, never followed.
+/// \pre `domain` passes `checkBaseDomain()`.
+/// Fails (Status), naming the problem, when `patchId` has not one value per
+/// triangle or names a triangle `domain` does not have, the landmarks are
+/// invalid or not one per base vertex (`validateLandmarks()`), `surface` is
+/// not a closed oriented edge-manifold (`EditableMesh::build()`), a boundary
+/// between two patches branches or does not run from landmark to landmark,
+/// or the curves enclose other patches than `patchId` says.
 Status layoutFromPatchIds(const TriangleMesh& surface, const std::vector<int>& patchId,
   const LandmarkList& landmarks, const BaseDomain& domain, TracedNet& net);
 

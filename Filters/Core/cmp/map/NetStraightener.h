@@ -18,9 +18,9 @@ namespace cmp
 {
 
 /// \brief The point at `t` from `a` to `b` (1 - t, t), its weights merged
-///        over the input vertices both use. Both must lie in one input
-///        triangle (on it, an edge or a vertex of it), so at most three
-///        vertices remain.
+///        over the input vertices both use. No triangle is recorded.
+/// \pre `a` and `b` lie in one input triangle (on it, an edge or a vertex
+///      of it), so at most three vertices remain.
 SurfacePoint interpolate(const SurfacePoint& a, const SurfacePoint& b, double t);
 
 /// \brief Tuning of `straightenNet()`.
@@ -78,7 +78,19 @@ struct StraightenedNet
 /// degenerate input, keeps the old curves). Vertices left behind by
 /// replaced curves are removed again where that leaves the surface
 /// unchanged. At the end, every non-curve edge between two curve vertices is
-/// split, so every patch can be parameterized bijectively.
+/// split, so every patch can be parameterized bijectively. Paper §2.2
+/// ("Edge Straightening"); the sweeps, the snapping and the clean-up are
+/// ours.
+///
+/// \pre `traced` is a layout of `domain` (`traceFeatureNet()` or
+///      `layoutFromPatchIds()` output).
+/// Fails (Status), naming the problem, when `domain` fails
+/// `checkBaseDomain()`, `traced` has not one curve per base edge, one
+/// landmark per base vertex and one patch per triangle ("the net does not
+/// belong to this base domain"), an option is out of range (sweeps >= 0,
+/// tolerance >= 0, 0 <= snap < 0.5) or the traced mesh is not a closed
+/// oriented edge-manifold; messages starting with "internal error" are not
+/// expected. `out` is complete only on success.
 Status straightenNet(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out,
   const NetStraightenerOptions& options = {}, NetStraightenerReport* report = nullptr);
 

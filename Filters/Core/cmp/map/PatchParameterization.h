@@ -56,12 +56,27 @@ struct PatchParameterizationOptions
 ///        that makes its most crowded triangle larger. With
 ///        `options.lowerStretch`, every patch's map then relaxes towards an
 ///        isometry (`relaxSymmetricDirichlet()`, flip-free steps).
+///
+/// Paper §2: the bijective map between the base domain and the model that
+/// the remesh is built with; the paper does not say how it maps a patch,
+/// and the map here reuses its edge straightening's recipe (curves by arc
+/// length, Floater's weights inside). The reweighting and `lowerStretch`
+/// are beyond the paper.
+///
+/// \pre `net` is a layout of `domain` (every patch a disk bounded by its
+///      three curves, `patchOfTriangle` set) as `straightenNet()` leaves
+///      it: no edge off the curves joins two curve vertices, which a
+///      bijective map needs.
+/// Fails (Status, "patch P: ...") when a patch's mean value system cannot
+/// be factorized or solved (degenerate geometry). Triangles that come out
+/// flipped are no failure: `out.flippedTriangles` counts them.
 Status parameterizePatches(const TracedNet& net, const BaseDomain& domain, PatchParameterization& out,
   const PatchParameterizationOptions& options = {});
 
 /// \brief Re-expresses barycentric coordinates given in base triangle
 ///        `from` in base triangle `to`. Possible only for a point on the
 ///        vertices the two triangles share; returns false otherwise.
+/// \pre `from` and `to` are triangles of `domain`.
 bool coordinatesInTriangle(const BaseDomain& domain, int from, const std::array<double, 3>& coordinates, int to,
   std::array<double, 3>& result);
 

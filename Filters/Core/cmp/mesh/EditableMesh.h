@@ -30,8 +30,10 @@ struct VertexOrigin
 class EditableMesh
 {
 public:
-  /// \brief Builds the table; fails on a mesh that is not a closed,
-  ///        oriented, edge-manifold surface.
+  /// \brief Builds the table from `mesh`.
+  /// Fails (Status) when some edge does not have exactly two oppositely
+  /// oriented triangles (an open, non-manifold or misoriented surface) or a
+  /// point belongs to no triangle.
   Status build(const TriangleMesh& mesh);
 
   /// \brief Number of vertices.
@@ -83,6 +85,8 @@ public:
   ///        triangles beside it. Returns the new vertex. Afterwards the
   ///        halfedge `h` runs from its old start to the new vertex. The two
   ///        halves of the edge inherit its tags.
+  /// \pre `build()` succeeded and `h` is a halfedge of a triangle not
+  ///      removed; the new vertex lies on the edge for `t` in [0, 1].
   int splitEdge(int h, double t = 0.5);
 
   /// \brief Merges the start of `h` into its end: the two triangles beside

@@ -27,7 +27,7 @@ public:
   ///        does, the best of all (a point just outside every triangle
   ///        gets the nearest). `weights` are `q`'s barycentric coordinates
   ///        in it. Triangles without positive area are skipped. False only
-  ///        if no triangle has positive area.
+  ///        if no triangle has positive area. \pre `build()` was called.
   bool locate(const Vec2& q, int& best, std::array<double, 3>& weights) const;
 
 private:

@@ -20,6 +20,9 @@ namespace cmp
 /// \brief Floater's mean value weights from the 3D geometry: entry (i, j) is
 ///        (tan(alpha/2) + tan(beta/2)) / |p_j - p_i| for every edge, where
 ///        alpha and beta are the angles at i beside the edge. Not symmetric.
+///        Paper §2.2: the "Floater scheme" of its F-vector parameterization
+///        and edge straightening.
+/// \pre Every triangle indexes vertices of `mesh`.
 Eigen::SparseMatrix<double> meanValueWeights(const TriangleMesh& mesh);
 
 /// \brief Solves x_v = sum_j W(v, j) x_j / sum_j W(v, j) for every vertex v
@@ -28,8 +31,16 @@ Eigen::SparseMatrix<double> meanValueWeights(const TriangleMesh& mesh);
 ///
 /// `values` becomes n x d (d = fixedValues.cols()). One sparse LU
 /// factorization serves all d columns. With positive weights and a convex
-/// boundary the result is a bijective embedding (Floater 1997). Vertices
-/// without neighbours must be fixed.
+/// boundary the result is a bijective embedding (Floater 1997). Paper §2.2
+/// solves this system by conjugate gradients; the mean value system is not
+/// symmetric, so here it is a sparse LU.
+///
+/// \pre `weights` is n x n with non-negative entries (row v: the weights of
+///      v's neighbours); `fixedRow` has n entries, each -1 or a row of
+///      `fixedValues`; every free vertex is joined to a fixed one through
+///      positive weights (vertices without neighbours must be fixed).
+/// Fails (Status) when the sparse LU cannot factorize the free vertices'
+/// system (degenerate geometry) or its solution is not finite.
 Status solveConvexCombinationSystem(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
   const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values);
 
@@ -41,12 +52,19 @@ class ConvexCombinationSolver
 public:
   /// \brief Factorizes sum_j W(v, j) (x_v - x_j) = b_v for every vertex v
   ///        with `fixedRow[v] < 0`; the other vertices are known.
+  /// \pre `weights` and `fixedRow` as for `solveConvexCombinationSystem()`.
+  /// Fails (Status) when the sparse LU cannot factorize the system
+  /// (degenerate geometry). A system without free vertices succeeds.
   Status factorize(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow);
 
   /// \brief `values` becomes n x d: a fixed vertex v gets
   ///        `fixedValues.row(fixedRow[v])`, the free ones solve the system
   ///        with b = the matching rows of `rhs` (n x d, any values on fixed
   ///        rows), or b = 0 if `rhs` is null.
+  /// \pre `factorize()` succeeded; `fixedValues` has a row for every
+  ///      `fixedRow` value it was given; `rhs`, if set, has n rows and
+  ///      `fixedValues.cols()` columns.
+  /// Fails (Status) when the solve fails or its result is not finite.
   Status solve(const Eigen::MatrixXd& fixedValues, const Eigen::MatrixXd* rhs, Eigen::MatrixXd& values) const;
 
 private:
@@ -65,7 +83,8 @@ private:
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
 };
 
-/// \brief `solveConvexCombinationSystem()` with `meanValueWeights(mesh)`.
+/// \brief `solveConvexCombinationSystem()` with `meanValueWeights(mesh)`:
+///        same preconditions (n = `mesh.vertexCount()`) and failures.
 Status solveMeanValueSystem(const TriangleMesh& mesh, const std::vector<int>& fixedRow,
   const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values);
 

@@ -15,11 +15,12 @@
 /// corrections, W-cycles below the finest level).
 ///
 /// Every step is linear and keeps constants, so with unit vectors fixed the
-/// rows still sum to one. On the 1M-triangle benchmark surface (517K
-/// unknowns, 21 columns) the defaults take 2.2 s instead of 19 s for the LU
-/// and differ from the exact solution by 8e-4 on average (1.7e-2 at most,
-/// beside the fixed vertices). That is what a cost heuristic needs, not what
-/// a bijective embedding needs: use the LU for those.
+/// rows still sum to one. The result is close to the exact solution but not
+/// equal to it, least so beside the fixed vertices: good enough for a cost
+/// heuristic (the tracer's ridge), not for a bijective embedding, which
+/// needs the LU. Beyond the paper, which solves by conjugate gradients. Its
+/// time and error against the LU are measured in Documentation/algorithm.md
+/// ("Net tracing") and Documentation/filters/FeatureNetTracer.md.
 
 #include <cmp/mesh/Status.h>
 
@@ -42,10 +43,10 @@ struct MultilevelOptions
   int finestSweeps = 1;
   /// \brief Symmetric sweeps on each coarser level in the nested start.
   int coarseSweeps = 10;
-  /// \brief V-cycles on the finest level after the nested start. With 4,
-  ///        the tracer's nets on the 1M-triangle surface are those of the
-  ///        exact solution; with none, the values near the landmarks are off
-  ///        by up to 0.4 and the nets change.
+  /// \brief V-cycles on the finest level after the nested start. They
+  ///        remove most of the nested start's error, which is largest
+  ///        beside the fixed vertices and there changes the tracer's nets
+  ///        (measured in Documentation/algorithm.md, "Net tracing").
   int cycles = 4;
   /// \brief Factor on each coarse-level correction: piecewise constant
   ///        interpolation underestimates smooth corrections.
@@ -65,6 +66,9 @@ struct MultilevelReport
 /// \brief Approximates the solution of `solveConvexCombinationSystem()`
 ///        (same arguments and meaning) by multigrid, in time linear in the
 ///        number of weights apart from the small coarsest factorization.
+/// \pre As for `solveConvexCombinationSystem()`.
+/// Fails (Status) when the coarsest system cannot be factorized or solved,
+/// or the result is not finite.
 Status solveConvexCombinationMultilevel(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
   const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values, const MultilevelOptions& options = {},
   MultilevelReport* report = nullptr);

@@ -20,27 +20,26 @@ namespace cmp
 /// \brief Tuning of `relaxSymmetricDirichlet()`.
 struct SymmetricDirichletOptions
 {
-  /// \brief Steps at most; most patch maps settle within 20, a crowded
-  ///        protrusion takes 100 or more (385's tail, squeezed 1e9 times in
-  ///        its mean value map: about 210). A relaxation cut short while
-  ///        still progressive stops at a point of its path that rounding
-  ///        decides: 385's remesh then lay 1.7% to 6.6% of the diagonal
-  ///        from its tail's tip, depending on the machine, where the
-  ///        settled map gives 4.3% to 4.8%.
+  /// \brief Steps at most: a safety bound, set high enough that a crowded
+  ///        protrusion's map settles (`leastRelativeGain`) before it. A
+  ///        relaxation cut short while still progressive stops at a point of
+  ///        its path that rounding decides, so the result would depend on
+  ///        the machine (figures in Documentation/filters/NetStraightener.md,
+  ///        "Lower stretch").
   int maximumIterations = 400;
   /// \brief A step that lowers the energy by less than this fraction ends
-  ///        the relaxation (1e-4 takes twice the time on a 1M-triangle
-  ///        surface for a 1% lower summed remesh Hausdorff distance on the
-  ///        SHREC'07 models).
+  ///        the relaxation; a smaller value takes more steps (its cost and
+  ///        gain: Documentation/filters/NetStraightener.md, "Speed").
   double leastRelativeGain = 1e-3;
   /// \brief A map that scales some triangle by more than this factor (in
   ///        either direction) is first relaxed by progressive steps: each
   ///        aims at reference shapes between the current triangles and the
   ///        surface's, no further than `progressiveStepDistortion` from the
   ///        current map, instead of at the surface itself. From a long
-  ///        protrusion squeezed a million times in a mean value map, plain
-  ///        steps are cut to a millionth by the flip-free line search and
-  ///        stall; progressive ones are not. Infinity turns them off.
+  ///        protrusion squeezed by orders of magnitude in a mean value map,
+  ///        plain steps are cut to almost nothing by the flip-free line
+  ///        search and stall; progressive ones are not. Infinity turns them
+  ///        off.
   double progressiveAbove = 1000.0;
   /// \brief How far, as a scale factor, a progressive step's reference
   ///        shapes lie from the current map; 1 or less turns progressive
@@ -63,6 +62,7 @@ struct SymmetricDirichletReport
 ///        the plane; 4 x area for an isometry, infinite if a triangle of
 ///        positive area has a flipped or degenerate image. Triangles of zero
 ///        surface area do not count.
+/// \pre `plane` has one row per vertex of `surface` and 2 columns.
 double symmetricDirichletEnergy(const TriangleMesh& surface, const Eigen::MatrixXd& plane);
 
 /// \brief Moves the free vertices of `plane` (those with `fixed[v] == 0`)
@@ -77,12 +77,17 @@ double symmetricDirichletEnergy(const TriangleMesh& surface, const Eigen::Matrix
 /// falls by less than `leastRelativeGain` (a step that raises it is undone)
 /// or the map is within `progressiveStepDistortion` everywhere.
 ///
-/// Every triangle's image must start counter-clockwise with positive area
-/// (a bijective map such as a Tutte or mean value embedding); fails, naming
-/// the problem, if it does not, if the sizes disagree, if a coordinate is
-/// not finite or if no vertex is fixed. A system that cannot be solved (a
-/// free vertex with no triangle of positive area) ends the relaxation with
-/// the map as it is. Cost per step: one sparse Cholesky factorization of
+/// \pre `plane` is n x 2 and `fixed` has n entries (n =
+///      `surface.vertexCount()`), at least one vertex is fixed, and every
+///      triangle of positive surface area starts counter-clockwise with
+///      positive image area (a bijective map such as a Tutte or mean value
+///      embedding).
+/// Fails (Status), naming the problem and leaving `plane` unchanged, when
+/// one of these does not hold or a coordinate is not finite. A system that
+/// cannot be solved (a free vertex with no triangle of positive area) is no
+/// failure: it ends the relaxation with the map as it is. Beyond the paper
+/// (SLIM and progressive steps, cited above); used by the per-patch maps'
+/// `lowerStretch`. Cost per step: one sparse Cholesky factorization of
 /// 2 x (free vertices) unknowns, its pattern analysed once.
 Status relaxSymmetricDirichlet(const TriangleMesh& surface, const std::vector<char>& fixed, Eigen::MatrixXd& plane,
   const SymmetricDirichletOptions& options = {}, SymmetricDirichletReport* report = nullptr);

@@ -59,11 +59,14 @@ struct FoldRepairReport
 ///        surface under them: the sum of the unit normals of the surface
 ///        triangles holding their corners (landmark corners record none; a
 ///        triangle of landmarks only, or a flat one, is not counted).
+/// \pre `samples` are `remesh` placed on `surface`, one per remesh vertex
+///      (unchecked here; `repairFolds()` checks them).
 int countFoldedTriangles(
   const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples);
 
 /// \brief 1 for each remesh triangle `countFoldedTriangles()` counts, 0
-///        for the others, in triangle order.
+///        for the others, in triangle order. \pre As for
+///        `countFoldedTriangles()`.
 std::vector<char> foldedTriangles(
   const SemiRegularMesh& remesh, const EditableMesh& surface, const std::vector<SurfacePoint>& samples);
 
@@ -124,11 +127,18 @@ std::vector<int> foldsNearLandmarks(
 /// most folds around them go first; a vertex the regions already took
 /// farther than its own reach from its parameterized place does not move
 /// alone. In the other order, single moves lock fans of needles that the
-/// joint moves then cannot undo (the 11 SHREC'07 and Spot models at level
-/// 5, one run: 39 folds left instead of 11; counts depend on rounding).
-/// Landmark samples never move. Every moved sample still names the surface triangle
-/// it lies in. Fails, changing nothing, on samples that do not fit `remesh`
-/// and `surface`.
+/// joint moves then cannot undo, and more folds remain (measured in
+/// Documentation/filters/SemiRegularRemesher.md, "Fold repair").
+/// Landmark samples never move. Every moved sample still names the surface
+/// triangle it lies in. Beyond the paper, whose remesh has no repair.
+///
+/// \pre `samples` are `remesh` placed on `surface` (`placeOnSurface()` on
+///      the layout whose mesh is `surface`).
+/// Fails (Status, "fold repair: ..."), changing nothing, when `samples` do
+/// not fit `remesh` and `surface` (not one per vertex, a triangle or vertex
+/// the surface does not have or has removed, weights that are not
+/// barycentric in their triangle) or an option is out of range (`reach` or
+/// `maximumSweeps` negative, `regionWidening` outside 1 to 64).
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfacePoint>& samples,
   const FoldRepairOptions& options = {}, FoldRepairReport* report = nullptr);
 

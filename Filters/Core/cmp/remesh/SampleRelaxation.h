@@ -19,8 +19,9 @@ namespace cmp
 /// \brief Tuning of `relaxSampleLocations()`.
 struct SampleRelaxationOptions
 {
-  /// \brief Rounds of moves; 0 leaves the locations as built. On the SHREC'07
-  ///        quadrupeds at level 5 most of the gain comes in the first four.
+  /// \brief Rounds of moves; 0 leaves the locations as built. What more
+  ///        rounds gain is measured in
+  ///        Documentation/filters/SemiRegularRemesher.md, "Sample relaxation".
   int iterations = 4;
   /// \brief Fraction of the way to its target a vertex moves in one round,
   ///        in (0, 1]; halved, up to 10 times, while one of its triangles
@@ -58,7 +59,12 @@ struct SampleRelaxationReport
 /// the same way, bit for bit (equal to one process holding every model up
 /// to the rounding of the sums). Collective.
 ///
-/// Fails, naming the problem, on every process and without touching
+/// Beyond the paper, whose remesh keeps the quadrisection's places.
+///
+/// \pre `remesh` was built on `domain` (`buildSemiRegularMesh()` or
+///      `buildAdaptiveSemiRegularMesh()`) and every model was built over
+///      `domain` (`ParameterizedSurface::build()`).
+/// Fails (Status), naming the problem, on every process and without touching
 /// `remesh`, if no process has a model, if a model was not built, if the
 /// remesh does not belong to `domain` (a vertex outside the base triangle
 /// of one of its triangles), if an option is out of range or if the
@@ -70,7 +76,8 @@ Status relaxSampleLocations(const BaseDomain& domain, const std::vector<const Pa
   Communicator& communicator, SemiRegularMesh& remesh, const SampleRelaxationOptions& options = {},
   SampleRelaxationReport* report = nullptr);
 
-/// \brief `relaxSampleLocations()` for a collection held by one process.
+/// \brief `relaxSampleLocations()` for a collection held by one process:
+///        same preconditions and failures.
 Status relaxSampleLocations(const BaseDomain& domain, const std::vector<const ParameterizedSurface*>& models,
   SemiRegularMesh& remesh, const SampleRelaxationOptions& options = {}, SampleRelaxationReport* report = nullptr);
 

@@ -27,6 +27,7 @@ namespace cmp
 /// \brief `at` in barycentric coordinates (c1, c2) of base triangle
 ///        `triangle` (its own, or one sharing the vertices `at` lies on);
 ///        false, `result` untouched, if `at` is not on that triangle.
+/// \pre `at.triangle` and `triangle` are triangles of `domain`.
 bool locationInBaseTriangle(const BaseDomain& domain, const SurfacePoint& at, int triangle, Vec2& result);
 
 /// \brief The semi-regular connectivity shared by every model of a
@@ -75,7 +76,10 @@ std::string remeshLevelProblem(const std::string& property, int level);
 
 /// \brief Builds the connectivity of `domain` refined `level` times (0 to
 ///        `kMaximumRemeshLevel`).
-///        Depends only on the base domain and the level.
+///        Depends only on the base domain and the level. Paper §2:
+///        repeated quadrisection of `L0`, one connectivity for every model.
+///        Fails (Status) on a level out of range (`remeshLevelProblem()`)
+///        and on a `domain` that fails `checkBaseDomain()`.
 Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out);
 
 /// \brief Decides whether a triangle of an adaptive remesh is split: gets
@@ -96,6 +100,13 @@ using SplitRule = std::function<bool(const std::array<SurfacePoint, 3>& corners,
 /// midpoints of level l in the order their edges first appear when the
 /// split triangles of level l - 1 are read in order; triangles in the order
 /// of recursive quadrisection, a bisected leaf giving its two halves.
+/// Paper §2 ("this can be done in an adaptive fashion"); the balancing and
+/// the bisections that close T-junctions are ours.
+///
+/// \pre `needsSplit` answers the same for the same corners and level (so
+///      the result is one connectivity, whoever builds it).
+/// Fails (Status) on a maximum level out of range (`remeshLevelProblem()`)
+/// and on a `domain` that fails `checkBaseDomain()`.
 Status buildAdaptiveSemiRegularMesh(
   const BaseDomain& domain, int maximumLevel, const SplitRule& needsSplit, SemiRegularMesh& out);
 
@@ -106,15 +117,28 @@ class ParameterizedSurface
 {
 public:
   /// \brief Indexes `net` (the straightener's output) with its per-patch
-  ///        parameterization. `net` must outlive this object.
+  ///        parameterization.
+  /// \pre `net` and `domain` outlive this object; `net` is a layout of
+  ///      `domain` and `parameterization` its `parameterizePatches()` (or
+  ///      `freeCurves()`) map.
+  /// Fails (Status) when `parameterization` has not one entry per vertex of
+  /// `net`, `net` has not one landmark per base vertex, or a vertex has no
+  /// coordinates in a patch it belongs to (its base triangle is not that
+  /// patch and it does not lie on the vertices they share).
   Status build(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& parameterization);
 
   /// \brief The surface point at base location `at`: the landmark itself
   ///        at a base vertex, otherwise the triangle of `at`'s patch whose
-  ///        image contains it, with barycentric weights.
+  ///        image contains it, with barycentric weights (a point just
+  ///        outside every image gets the nearest).
+  /// \pre `at` is a place in the base domain given to `build()`
+  ///      (`SurfacePoint::inTriangle()` of its mesh).
+  /// Fails (Status) when the surface was not built, or when no triangle of
+  /// the patch has an image of positive area.
   Status locate(const SurfacePoint& at, SurfacePoint& sample) const;
 
-  /// \brief The position of `sample` on the surface.
+  /// \brief The position of `sample` on the surface. \pre `built()`, and
+  ///        `sample` a point of its layout's mesh (`locate()`).
   Vec3 position(const SurfacePoint& sample) const;
 
   /// \brief Length of the diagonal of the surface's bounding box.
@@ -150,7 +174,10 @@ private:
 ///        lattice of order 4 without the corners) lies farther than
 ///        `tolerance` times that model's bounding-box diagonal from the
 ///        point the flat triangle through its corners' surface points puts
-///        there. Models must outlive the rule.
+///        there. A corner or point a model cannot locate splits the
+///        triangle. Beyond the paper, which does not say when to refine.
+/// \pre The models are built over the base domain the adaptive remesh is
+///      built on, and outlive the rule.
 SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& models, double tolerance);
 
 /// \brief Places every vertex of `remesh` on a parameterized model by
@@ -158,16 +185,23 @@ SplitRule flatnessSplitRule(const std::vector<const ParameterizedSurface*>& mode
 ///        whose image contains the vertex's base location (a uniform grid
 ///        per patch, not a scan), interpolated barycentrically. `net` and
 ///        `parameterization` are the straightener's and the per-patch
-///        map's output for the same surface.
+///        map's output for the same surface. Paper §2: the remesh's
+///        vertices on each model through its map.
+/// \pre `remesh` was built on `domain`.
+/// Fails (Status) where `ParameterizedSurface::build()` fails, and when a
+/// remesh vertex cannot be located ("remesh vertex V: ...").
 Status placeOnSurface(const SemiRegularMesh& remesh, const TracedNet& net, const BaseDomain& domain,
   const PatchParameterization& parameterization, std::vector<SurfacePoint>& samples);
 
 /// \brief Places every vertex of `remesh` on a model already indexed.
+/// \pre `surface` was built over the base domain `remesh` was built on.
+/// Fails (Status, "remesh vertex V: ...") where
+/// `ParameterizedSurface::locate()` fails.
 Status placeOnSurface(
   const SemiRegularMesh& remesh, const ParameterizedSurface& surface, std::vector<SurfacePoint>& samples);
 
 /// \brief The position of `sample` on `mesh`: its weights on its (up to
-///        three) vertices.
+///        three) vertices. \pre Its vertices are vertices of `mesh` (or -1).
 Vec3 samplePosition(const EditableMesh& mesh, const SurfacePoint& sample);
 
 /// \brief The positions of `samples` on the mesh of `net`.
