@@ -32,6 +32,15 @@
 /// (cell array `CornerTCoords`), and the point array `TCoords` is set as
 /// the active texture coordinates. Field arrays: `TransferredArrays`,
 /// `SeamPointsAdded`, `TransferSeconds`.
+///
+/// Paper §3 ("Transfer of Textures"); per-corner texture coordinates and
+/// seam splitting are beyond the paper. Fails with `vtkErrorMacro` and an
+/// empty output when the source or `L0` is not connected, `L0` is invalid,
+/// the source or a target is not a surface parameterized over that `L0`
+/// (the checks of Check Inputs, missing or inconsistent `BaseTriangle`,
+/// `BaseCoordinates` or `PatchId`, a layout not equivalent to `L0`), or a
+/// target point cannot be located on the source; the message says which
+/// input. The messages are listed in Documentation/filters/AttributeTransfer.md.
 class CMPFILTERS_EXPORT vtkCMPAttributeTransfer : public vtkDataObjectAlgorithm
 {
 public:

@@ -17,6 +17,12 @@
 /// `MeanShapeQuality` (1 = all equilateral) and `FoldingCollapses`.
 /// Every step is a topology-preserving half-edge collapse, so the result is
 /// always a valid genus-0 triangulation laid out like the surface.
+///
+/// Paper §2 lets `L0` be given or "found automatically"; this decimation is
+/// ours (core `cmp::buildBaseDomain()`). Fails with `vtkErrorMacro` and no
+/// output when the surface or its landmarks fail the checks of Check
+/// Inputs, with fewer than 4 landmarks, or when the decimation gets stuck;
+/// messages in Documentation/filters/BaseDomainBuilder.md.
 class CMPFILTERS_EXPORT vtkCMPBaseDomainBuilder : public vtkPolyDataAlgorithm
 {
 public:

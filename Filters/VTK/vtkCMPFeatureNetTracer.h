@@ -27,6 +27,13 @@
 /// and end). Both carry field arrays `NetLength`, `NetLengthPerSqrtArea`,
 /// `NetValid` (1 when the independent layout check passes), `RetracedCurves`,
 /// `PenalisedCurves` and `SplitEdges`.
+///
+/// Paper §2.1 and §2.2 (core `cmp::traceFeatureNet()`). Fails with
+/// `vtkErrorMacro` and no output when `L0` is not connected, the surface,
+/// its landmarks or `L0` fail the checks of Check Inputs (for example `L0`
+/// with another vertex count than the surface's landmarks) or the tracing
+/// fails; warns, with `NetValid` 0, when the net fails the layout check.
+/// The messages are listed in Documentation/filters/FeatureNetTracer.md.
 class CMPFILTERS_EXPORT vtkCMPFeatureNetTracer : public vtkPolyDataAlgorithm
 {
 public:

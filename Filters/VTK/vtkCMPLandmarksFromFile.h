@@ -13,9 +13,12 @@
 ///
 /// Ids in the file index the points of the mesh file; if the reader welded
 /// points, its `FileToMeshPointId` field array maps them. CSV positions are
-/// snapped to the nearest vertex. Duplicates, out-of-range ids, malformed
-/// lines and a count different from `ExpectedLandmarkCount` (when >= 0) are
-/// errors that produce no output.
+/// snapped to the nearest vertex. The landmarks are the paper's F feature
+/// points (§2, "Basic Setup"; core `cmp::readLandmarkFile()`).
+/// Duplicates, out-of-range ids, malformed lines, positions that do not
+/// match the surface and a count different from `ExpectedLandmarkCount`
+/// (when >= 0) are reported with `vtkErrorMacro` and produce no output
+/// (messages in Documentation/filters/LandmarksFromFile.md).
 class CMPFILTERS_EXPORT vtkCMPLandmarksFromFile : public vtkPolyDataAlgorithm
 {
 public:

@@ -20,10 +20,12 @@
 /// ids first, whose order is then the mesh's. `PointIds`, when given, is
 /// used instead of the selection: the explicit, ordered way.
 ///
-/// Errors (no output): no selection and no ids, a cell selection, an id out
-/// of range, the same point twice, a count different from
-/// `ExpectedLandmarkCount` (when >= 0), and every surface check of the
-/// other filters (closed, manifold, finite coordinates).
+/// The landmarks are the paper's F feature points (§2, "Basic Setup").
+/// Errors, reported with `vtkErrorMacro` (no output): no selection and no
+/// ids, a cell selection, an id out of range, the same point twice, a
+/// count different from `ExpectedLandmarkCount` (when >= 0), and every
+/// surface check of the other filters (closed, manifold, finite
+/// coordinates).
 class CMPFILTERS_EXPORT vtkCMPLandmarksFromSelection : public vtkPolyDataAlgorithm
 {
 public:

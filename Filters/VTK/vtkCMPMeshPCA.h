@@ -41,6 +41,15 @@ class vtkMultiProcessController;
 ///    times `SynthesisModeFactor` on mode `SynthesisMode`.
 /// 4. *Aligned*: the input collection, each model aligned (same blocks,
 ///    same arrays), on every rank for the blocks it holds.
+///
+/// Paper §3 ("Principal Mesh Components", Figures 10 and 11; core
+/// `cmp::alignShapes()` and `cmp::computeMeshPCA()`). Fails with
+/// `vtkErrorMacro` and no output when the collection has fewer than two
+/// models, the models differ in connectivity (on one rank or between
+/// ranks) or have a non-finite coordinate, the alignment fails (for example
+/// a model enclosing no volume with equal-volume scaling), or
+/// `SynthesisModel` or `SynthesisMode` names no model or kept mode; the
+/// messages are listed in Documentation/filters/MeshPCA.md.
 class CMPFILTERS_EXPORT vtkCMPMeshPCA : public vtkDataObjectAlgorithm
 {
 public:

@@ -33,12 +33,22 @@
 /// patch's surface area: 1 for an area-preserving map, tiny where a part
 /// without landmarks is crushed), `WidestCurveGap` and
 /// `WidestCurveGapFeature` (the largest angle, in degrees, between two
-/// consecutive curves leaving a landmark, and that landmark: above about
-/// 250° the curves leave bunched and a remesh often folds there; see
-/// CurveSpread.h) and `NetValid` (1 when the independent layout check
+/// consecutive curves leaving a landmark, and that landmark: far above
+/// 360 / valence the curves leave bunched and a remesh often folds there;
+/// see CurveSpread.h) and `NetValid` (1 when the independent layout check
 /// passes on the result).
 /// Output 1: the net as polylines, one per `L0` edge, with cell arrays
 /// `BaseEdgeId`, `FeatureIdA` and `FeatureIdB`, and the same field arrays.
+///
+/// Paper §2.2 ("Edge Straightening") and the per-patch maps of §2;
+/// `LowerStretch` and `FreeCurves` are beyond the paper. Fails with
+/// `vtkErrorMacro` and no output when `L0` is not connected, a property is
+/// out of range, the surface, its landmarks or `L0` fail the checks of
+/// Check Inputs, `PatchId` is missing or its layout is not equivalent to
+/// `L0`, or the straightening or a patch's map cannot be solved; warns (the
+/// output is still made) when the curves could not be freed, the result
+/// fails the layout check or a triangle's image is flipped. The messages
+/// are listed in Documentation/filters/NetStraightener.md.
 class CMPFILTERS_EXPORT vtkCMPNetStraightener : public vtkPolyDataAlgorithm
 {
 public:
@@ -74,7 +84,8 @@ public:
   /// \brief Relax every patch's map towards an isometry (default off):
   ///        parts of the surface that carry no landmark (ears, horns, tails)
   ///        get more of the base domain, so a uniform remesh reaches further
-  ///        into them, at 5-7 times the parameterization's cost.
+  ///        into them, at several times the parameterization's cost
+  ///        (Documentation/filters/NetStraightener.md, "Speed").
   ///        Off, only patches where such a part is crushed to almost no area
   ///        are spread.
   vtkSetMacro(LowerStretch, bool);
@@ -110,8 +121,8 @@ public:
 
   /// \brief With FreeCurves, the most triangles the traced surface may have
   ///        for its curves to be freed (default 150000; 0: no limit). The
-  ///        whole-surface map's time grows faster than the surface (a
-  ///        258K-triangle surface took 16 minutes): above the limit the
+  ///        whole-surface map's time grows faster than the surface (times
+  ///        in Documentation/filters/NetStraightener.md): above the limit the
   ///        straightened curves are kept, with a warning and the reason in
   ///        Field Data FreeCurvesReason.
   vtkSetMacro(FreeCurvesMaximumTriangles, int);

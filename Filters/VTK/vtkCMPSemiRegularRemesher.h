@@ -49,6 +49,17 @@ class vtkPolyData;
 /// Output 1: the connectivity once, drawn on `L0` (every vertex at its base
 /// location), with point arrays `BaseTriangle`, `BaseCoordinates`,
 /// `VertexLevel`, `FeatureId` and cell arrays `PatchId`, `Level`.
+///
+/// Paper §2 (quadrisection, "possibly adaptive"); sample relaxation, fold
+/// repair and the distances are beyond the paper (core `cmp::remesh()`).
+/// Fails with `vtkErrorMacro` and an empty output when a property is out of
+/// range, `L0` is not connected or invalid, an input is not a parameterized
+/// surface of that `L0` (checks of Check Inputs, missing or inconsistent
+/// `BaseTriangle`, `BaseCoordinates` or `PatchId`, a layout not equivalent
+/// to `L0`), or the remesh cannot be placed on a model; the message names
+/// the block. With sample relaxation under MPI a rank that fails makes
+/// every rank fail with its message. The messages are listed in
+/// Documentation/filters/SemiRegularRemesher.md.
 class CMPFILTERS_EXPORT vtkCMPSemiRegularRemesher : public vtkDataObjectAlgorithm
 {
 public:
@@ -93,10 +104,10 @@ public:
   ///        every model given, so remesh the whole collection in one run
   ///        (under MPI, every rank's models count, and the ranks must
   ///        remesh one connectivity: an adaptive remesh refined per rank is
-  ///        refused). 4 rounds cut the summed Hausdorff distance of the
-  ///        SHREC'07 quadrupeds at level 5 by 31% (15% with the
-  ///        straightener's LowerStretch). Negative values are reported when
-  ///        the filter runs.
+  ///        refused). Where a model's map crowds a part without a landmark,
+  ///        the remesh then reaches further into it (measured in
+  ///        Documentation/filters/SemiRegularRemesher.md, "Sample
+  ///        relaxation"). Negative values are reported when the filter runs.
   vtkSetMacro(SampleRelaxationIterations, int);
   /// \brief Rounds of sample relaxation (0: none).
   vtkGetMacro(SampleRelaxationIterations, int);
@@ -112,8 +123,9 @@ public:
   /// \brief Measure how far each remesh is from its input (default on):
   ///        field arrays `HausdorffDistance`, `HausdorffDistanceRelative`
   ///        (divided by the input's bounding-box diagonal), `MeanDistance`
-  ///        and `DistanceSeconds`. Sampled, both ways; usually takes
-  ///        most of the filter's time (two thirds or more).
+  ///        and `DistanceSeconds`. Sampled, both ways; usually the
+  ///        costliest part of the filter (times in
+  ///        Documentation/filters/SemiRegularRemesher.md, "Measured").
   vtkSetMacro(ComputeDistance, bool);
   /// \brief Measure how far each remesh is from its input.
   vtkGetMacro(ComputeDistance, bool);

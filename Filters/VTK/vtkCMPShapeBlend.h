@@ -27,6 +27,11 @@ class vtkMultiProcessController;
 /// parallel run): the blend with the shared triangles, the correspondence
 /// arrays and cell arrays of the first model, field arrays `Extrapolating`
 /// (0 or 1) and `Weights`.
+///
+/// Fails with `vtkErrorMacro` and no output when the models differ in
+/// connectivity or have a non-finite coordinate (as for Mesh PCA), the
+/// weights are not one finite number per model summing to one, or the
+/// alignment fails; messages in Documentation/filters/ShapeBlend.md.
 class CMPFILTERS_EXPORT vtkCMPShapeBlend : public vtkDataObjectAlgorithm
 {
 public:

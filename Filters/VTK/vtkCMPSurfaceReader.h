@@ -21,8 +21,10 @@
 /// duplicated points); when every point has a single texture coordinate they
 /// are also set as point `TCoords`. Polygons are fan-triangulated. Field
 /// array `WeldedPointCount` says how many points were merged.
-/// Errors (missing, unreadable or garbage file, unknown extension) are
-/// reported with `vtkErrorMacro` and produce no output.
+/// Errors (missing, unreadable or garbage file, unknown extension, an STL
+/// or VTP file the core's checks refuse before VTK's reader sees it) are
+/// reported with `vtkErrorMacro` and produce no output (messages in
+/// Documentation/filters/SurfaceReader.md).
 class CMPFILTERS_EXPORT vtkCMPSurfaceReader : public vtkPolyDataAlgorithm
 {
 public:

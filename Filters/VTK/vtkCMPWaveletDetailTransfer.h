@@ -36,6 +36,15 @@ class vtkMultiProcessController;
 ///   field arrays `DetailWeights` (the schedule used) and `TransferSeconds`;
 /// - port 1, a multiblock with the result's approximation at every level
 ///   0..J ("Level l"), for seeing what each scale contributes.
+///
+/// Paper §3 ("Transfer of Wavelet Details", Figure 13; core
+/// `cmp::transferDetails()`); local detail frames and size scaling are
+/// beyond the paper. Fails with `vtkErrorMacro` and no output when
+/// `CoarseModel` or `DetailModel` names no model, the collection is not one
+/// uniform remesh (adaptive, no `VertexLevel`, connectivities that differ),
+/// `LastCoarseLevel` is out of range or above the remesh's finest level,
+/// or `DetailWeights` has not one finite entry per level; messages in
+/// Documentation/filters/WaveletDetailTransfer.md.
 class CMPFILTERS_EXPORT vtkCMPWaveletDetailTransfer : public vtkPolyDataAlgorithm
 {
 public:
