@@ -59,7 +59,10 @@ struct RemeshOptions
 /// \brief Checks the options `remesh()` checks first. The messages name the
 ///        options as the Semi-Regular Remesher's properties do (`Level`,
 ///        `AdaptiveTolerance`, `SampleRelaxationIterations`), so that a
-///        filter can pass them on as they are.
+///        filter can pass them on as they are. Fails (Status) on a level
+///        outside 0 to `kMaximumRemeshLevel`, a negative or non-finite
+///        tolerance, or negative relaxation rounds; the fold repair's
+///        options are checked by `repairFolds()`.
 Status checkRemeshOptions(const RemeshOptions& options);
 
 /// \brief One model to remesh.
@@ -149,20 +152,26 @@ struct RemeshReport
 /// process fail with its message, so that none waits for the others.
 /// Without relaxation no process waits for another.
 ///
-/// Fails, naming the problem, on options out of range
-/// (`checkRemeshOptions()`), a model that is missing or not built, and
-/// when a model's placement or fold repair fails (`report->failedModel`
-/// says which). `out` is complete only on success.
+/// Fails (Status), naming the problem, on options out of range
+/// (`checkRemeshOptions()`), a model that is missing or not built, a
+/// `domain` that fails `checkBaseDomain()`, a failed sample relaxation
+/// ("sample relaxation: ...", `relaxSampleLocations()`), and when a model's
+/// placement or fold repair fails (`report->failedModel` says which). `out`
+/// is complete only on success. The connectivity by quadrisection, uniform
+/// or adaptive, is the paper's (§2); sample relaxation, fold repair and the
+/// distances are beyond it.
 Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localModels, Communicator& communicator,
   CollectionRemesh& out, const RemeshOptions& options = {}, RemeshReport* report = nullptr);
 
-/// \brief `remesh()` for a collection held by one process.
+/// \brief `remesh()` for a collection held by one process: same
+///        preconditions and failures.
 Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& models, CollectionRemesh& out,
   const RemeshOptions& options = {}, RemeshReport* report = nullptr);
 
 /// \brief `remesh()` for one model given by its layout `net` (the
 ///        straightener's) and `parameterization` (the per-patch map's);
-///        `surface` is the model as given, for the distances.
+///        `surface` is the model as given, for the distances. Fails as
+///        `remesh()` does, and where `ParameterizedSurface::build()` fails.
 Status remesh(const TriangleMesh& surface, const TracedNet& net, const BaseDomain& domain,
   const PatchParameterization& parameterization, CollectionRemesh& out, const RemeshOptions& options = {},
   RemeshReport* report = nullptr);
