@@ -50,8 +50,8 @@ def parse_arguments(argv):
                         % (MAX_LEVEL, DEFAULT_LEVEL))
     parser.add_argument("--adaptive-tolerance", type=float, default=0.0, metavar="T",
                         help="refine adaptively, J being the maximum level: split a triangle while on any model the "
-                        "surface is farther than T times that model's bounding-box diagonal from it (e.g. 0.002; "
-                        "default 0: uniform)")
+                        "surface is farther than T times that model's bounding-box diagonal from it, and again "
+                        "where the placed remesh still is (e.g. 0.002; default 0: uniform)")
     parser.add_argument("--relax-samples", type=int, metavar="N",
                         help="N rounds of sample relaxation (the Semi-Regular Remesher's SampleRelaxationIterations; "
                         "default %d, or the collection's relax_samples; 0: none): remesh vertices move within their "

@@ -128,7 +128,11 @@ def _summary(report):
     lines = []
     remesh = report.get("remesh", {})
     if "vertices" in remesh:
-        adaptive = ", adaptive (tolerance %g)" % remesh["adaptive_tolerance"] if remesh["adaptive_tolerance"] else ""
+        adaptive = ""
+        if remesh["adaptive_tolerance"]:
+            passes = remesh.get("adaptive_passes", 1)
+            adaptive = ", adaptive (tolerance %g, made in %d pass%s)" % (remesh["adaptive_tolerance"], passes,
+                                                                        "" if passes == 1 else "es")
         rounds = remesh.get("sample_relaxation_rounds", 0)
         if rounds:
             adaptive += ", samples relaxed (%d round%s)" % (rounds, "" if rounds == 1 else "s")

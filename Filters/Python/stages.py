@@ -274,6 +274,7 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
         "triangles": connectivity.GetNumberOfCells(),
         "sample_relaxation_rounds": int(shared(array_names.SAMPLE_RELAXATION_ROUNDS_FIELD)),
         "sample_relaxation_seconds": round(shared(array_names.SAMPLE_RELAXATION_SECONDS_FIELD), 4),
+        "adaptive_passes": int(shared(array_names.ADAPTIVE_PASSES_FIELD)),
         "fold_repair": bool(repair_folds),
         "seconds": round(seconds, 4),
     }

@@ -16,7 +16,11 @@ def print_summary(models, report):
     if "error" in remesh:
         print("remesh: FAILED: %s" % remesh["error"])
     elif "vertices" in remesh:
-        adaptive = " (adaptive, tolerance %g)" % remesh["adaptive_tolerance"] if remesh["adaptive_tolerance"] else ""
+        adaptive = ""
+        if remesh["adaptive_tolerance"]:
+            passes = remesh.get("adaptive_passes", 1)
+            adaptive = " (adaptive, tolerance %g, %d pass%s)" % (remesh["adaptive_tolerance"], passes,
+                                                                "" if passes == 1 else "es")
         relaxed = ""
         if remesh.get("sample_relaxation_rounds"):
             relaxed = "; samples relaxed in %d rounds (%.3f s)" % (remesh["sample_relaxation_rounds"],

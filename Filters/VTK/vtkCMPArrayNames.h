@@ -139,6 +139,8 @@ constexpr const char* kCentroidFlipsField = "CentroidFlips";
 constexpr const char* kFoldsNearFeatureArray = "FoldsNearFeature";
 constexpr const char* kRepairedVerticesField = "RepairedVertices";
 constexpr const char* kSampleRelaxationRoundsField = "SampleRelaxationRounds";
+/// \brief Adaptive remeshing: how many times the connectivity was made (0 uniform).
+constexpr const char* kAdaptivePassesField = "AdaptivePasses";
 constexpr const char* kSampleRelaxationSecondsField = "SampleRelaxationSeconds";
 constexpr const char* kRebuildSecondsField = "RebuildSeconds";
 constexpr const char* kPlacementSecondsField = "PlacementSeconds";

@@ -167,6 +167,7 @@ struct SharedArrays
   {
     cmp::bridge::setFieldValue(field, cmp::bridge::kSampleRelaxationRoundsField, report.sampleRelaxationRounds);
     cmp::bridge::setFieldValue(field, cmp::bridge::kSampleRelaxationSecondsField, report.sampleRelaxationSeconds);
+    cmp::bridge::setFieldValue(field, cmp::bridge::kAdaptivePassesField, report.adaptivePasses);
   }
 };
 

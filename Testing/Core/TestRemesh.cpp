@@ -134,6 +134,7 @@ TEST_F(RemeshOfSpheres, RefinesAndRelaxesOverTheWholeCollection)
   options.adaptiveTolerance = 0.002;
   options.sampleRelaxationIterations = 2;
   options.repairFolds = false;
+  options.computeDistance = false; // one pass: the tolerance is not checked on the placed remesh
   options.threads = 1;
   std::vector<double> progress;
   options.progress = [&](double f) { progress.push_back(f); };
@@ -141,6 +142,7 @@ TEST_F(RemeshOfSpheres, RefinesAndRelaxesOverTheWholeCollection)
   RemeshReport report;
   ASSERT_TRUE(remesh(domain_, models(), remeshed, options, &report).ok());
   EXPECT_EQ(report.sampleRelaxationRounds, 2);
+  EXPECT_EQ(report.adaptivePasses, 1);
   EXPECT_EQ(progress, (std::vector<double>{ 0.5, 1.0 }));
 
   std::vector<const ParameterizedSurface*> both{ &maps_[0], &maps_[1] };
@@ -159,6 +161,58 @@ TEST_F(RemeshOfSpheres, RefinesAndRelaxesOverTheWholeCollection)
     EXPECT_EQ(report.models[m].repair.movedVertices, 0);
     EXPECT_EQ(report.models[m].foldedBeforeRepair, report.models[m].foldedAfterRepair);
   }
+}
+
+TEST_F(RemeshOfSpheres, AnAdaptiveRemeshFartherThanTheToleranceIsMadeAgain)
+{
+  // The split rule's probes see the maps before relaxation and repair move
+  // the samples, so the first adaptive remesh ends farther than the
+  // tolerance from a model; the triangles there are split once more and the
+  // remesh made again, until every model is within the tolerance.
+  RemeshOptions options;
+  options.level = 6;
+  options.adaptiveTolerance = 0.002;
+  options.sampleRelaxationIterations = 2;
+  std::vector<double> progress;
+  options.progress = [&](double f) { progress.push_back(f); };
+
+  RemeshOptions once = options;
+  once.computeDistance = false; // no check: one pass
+  CollectionRemesh first;
+  RemeshReport firstReport;
+  ASSERT_TRUE(remesh(domain_, models(), first, once, &firstReport).ok());
+  EXPECT_EQ(firstReport.adaptivePasses, 1);
+  int farAtFirst = 0;
+  for (int m = 0; m < 2; ++m)
+  {
+    const std::vector<char> far = trianglesFartherThan(surfaces_[m], { first.models[m].positions, first.mesh.triangles },
+      options.adaptiveTolerance * boundingBoxDiagonal(surfaces_[m]));
+    farAtFirst += static_cast<int>(std::count(far.begin(), far.end(), 1));
+  }
+  ASSERT_GT(farAtFirst, 0) << "the first remesh is within the tolerance: the test no longer tests the passes";
+
+  progress.clear();
+  CollectionRemesh remeshed;
+  RemeshReport report;
+  ASSERT_TRUE(remesh(domain_, models(), remeshed, options, &report).ok());
+  EXPECT_GE(report.adaptivePasses, 2);
+  ASSERT_EQ(report.adaptiveTriangles.size(), static_cast<std::size_t>(report.adaptivePasses));
+  EXPECT_EQ(report.adaptiveTriangles.front(), static_cast<int>(first.mesh.triangles.size()));
+  EXPECT_EQ(report.adaptiveTriangles.back(), static_cast<int>(remeshed.mesh.triangles.size()));
+  EXPECT_TRUE(std::is_sorted(report.adaptiveTriangles.begin(), report.adaptiveTriangles.end()));
+  // Only where it was far: well below the uniform remesh of that level.
+  EXPECT_LT(remeshed.mesh.triangles.size(), 8u * 4096u / 2u);
+  for (int m = 0; m < 2; ++m)
+  {
+    EXPECT_LE(report.models[m].hausdorffDistanceRelative, options.adaptiveTolerance) << "model " << m;
+    const std::vector<char> far = trianglesFartherThan(surfaces_[m],
+      { remeshed.models[m].positions, remeshed.mesh.triangles },
+      options.adaptiveTolerance * boundingBoxDiagonal(surfaces_[m]));
+    EXPECT_EQ(std::count(far.begin(), far.end(), 1), 0) << "model " << m;
+  }
+  ASSERT_FALSE(progress.empty());
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_EQ(progress.back(), 1.0);
 }
 
 TEST_F(RemeshOfSpheres, PlacesTheModelsOnSeveralThreadsWithTheSameResult)

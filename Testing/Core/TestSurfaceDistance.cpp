@@ -237,6 +237,36 @@ TEST(SurfaceDistance, SaysWhereTheHausdorffDistanceIsReached)
   EXPECT_EQ(back.farthestPoint(), spiked.points[tip]);
 }
 
+TEST(SurfaceDistance, MarksTheRemeshTrianglesWhereTheDistanceIsAboveALimit)
+{
+  const TriangleMesh sphere = test::sphere(4);
+  const int tip = 7;
+  std::vector<int> aroundTip;
+  for (int t = 0; t < sphere.triangleCount(); ++t)
+    if (std::find(sphere.triangles[t].begin(), sphere.triangles[t].end(), tip) != sphere.triangles[t].end())
+      aroundTip.push_back(t);
+  TriangleMesh spiked = sphere;
+  spiked.points[tip] *= 1.5;
+  const auto marked = [](const std::vector<char>& far) {
+    std::vector<int> result;
+    for (int t = 0; t < static_cast<int>(far.size()); ++t)
+      if (far[t])
+        result.push_back(t);
+    return result;
+  };
+  // A remesh spike off the surface: its own triangles, sampled, are far.
+  EXPECT_EQ(marked(trianglesFartherThan(sphere, spiked, 0.1)), aroundTip);
+  // A surface spike the remesh misses: the remesh triangles nearest to its
+  // far samples are marked, and no triangle far from the spike is.
+  const std::vector<int> missing = marked(trianglesFartherThan(spiked, sphere, 0.1));
+  ASSERT_FALSE(missing.empty());
+  for (int t : missing)
+    EXPECT_LT((sphere.points[sphere.triangles[t][0]] - sphere.points[tip]).norm(), 0.5) << "triangle " << t;
+  // Within the limit nothing is marked; the same surface never is.
+  EXPECT_TRUE(marked(trianglesFartherThan(spiked, sphere, 0.6)).empty());
+  EXPECT_TRUE(marked(trianglesFartherThan(sphere, sphere, 1e-12)).empty());
+}
+
 TEST(SurfaceDistance, MeshAgainstItselfIsZero)
 {
   const TriangleMesh mesh = test::bumpySphere(3);

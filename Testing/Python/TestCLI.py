@@ -286,9 +286,15 @@ def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0
         triangles = collection.get("triangles", 0)
         check(0 < triangles < uniform, "adaptive remesh: %d triangles, uniform %d" % (triangles, uniform))
         label = "level %d (adaptive, tolerance %g)" % (level, adaptive)
+        # Made again where the placed remesh was still too far: 1 to 3 passes.
+        passes = collection.get("adaptive_passes", 0)
+        check(1 <= passes <= 3, "adaptive remesh made in %r passes" % passes)
+        summary = "level %d (adaptive, tolerance %g, %d pass%s)" % (level, adaptive, passes,
+                                                                   "" if passes == 1 else "es")
     else:
         triangles = uniform
-        label = "level %d" % level
+        label = summary = "level %d" % level
+        check_equal(collection.get("adaptive_passes"), 0, "adaptive_passes of a uniform remesh")
     vertices = 2 + triangles // 2
     check_equal((collection.get("level"), collection.get("adaptive_tolerance"), collection.get("vertices"),
                  collection.get("triangles")), (level, adaptive, vertices, triangles),
@@ -296,7 +302,7 @@ def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0
     check_equal(collection.get("models"), names, "remeshed models")
     check(collection.get("seconds", 0) > 0 and "error" not in collection, "remesh figures %r" % collection)
     check_contains(stdout, "remeshing %d models at %s" % (len(names), label), "progress")
-    check_contains(stdout, "remesh: %s, %d vertices, %d triangles per model" % (label, vertices, triangles), "summary")
+    check_contains(stdout, "remesh: %s, %d vertices, %d triangles per model" % (summary, vertices, triangles), "summary")
     check_contains(stdout, "Hausdorff/diag %", "summary header")
 
     connectivity = read_vtp(os.path.join(out, "remesh_connectivity.vtp"))

@@ -375,6 +375,36 @@ ClosestPointQuery::Result ClosestPointQuery::closest(const Vec3& p) const
   return best;
 }
 
+std::vector<char> trianglesFartherThan(
+  const TriangleMesh& surface, const TriangleMesh& remesh, double limit, int subdivisions)
+{
+  std::vector<char> far(remesh.triangles.size(), 0);
+  if (surface.triangles.empty() || remesh.triangles.empty())
+    return far;
+  const int steps = std::max(1, subdivisions);
+  // Calls visit(p) for every point of triangle t's barycentric grid.
+  const auto forGrid = [steps](const TriangleMesh& mesh, int t, const auto& visit) {
+    const auto x = corners(mesh, t);
+    for (int i = 0; i <= steps; ++i)
+      for (int j = 0; i + j <= steps; ++j)
+        visit((i * x[0] + j * x[1] + (steps - i - j) * x[2]) / steps);
+  };
+  const ClosestPointQuery toSurface(surface);
+  for (int t = 0; t < remesh.triangleCount(); ++t)
+    forGrid(remesh, t, [&](const Vec3& p) {
+      if (!far[t] && toSurface.closest(p).distance > limit)
+        far[t] = 1;
+    });
+  const ClosestPointQuery toRemesh(remesh);
+  for (int t = 0; t < surface.triangleCount(); ++t)
+    forGrid(surface, t, [&](const Vec3& p) {
+      const ClosestPointQuery::Result nearest = toRemesh.closest(p);
+      if (nearest.distance > limit && nearest.at.triangle >= 0)
+        far[nearest.at.triangle] = 1;
+    });
+  return far;
+}
+
 SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, int subdivisions)
 {
   const int steps = std::max(1, subdivisions);

@@ -97,6 +97,17 @@ struct SurfaceDistance
 /// a mesh without triangles are infinite.
 SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, int subdivisions = 3);
 
+/// \brief Where `remesh` misses `surface` by more than `limit`: per triangle
+///        of `remesh`, 1 if a sample of it lies farther than `limit` from
+///        `surface`, or if it is the triangle of `remesh` nearest to a
+///        sample of `surface` that lies farther than `limit` from `remesh`.
+///        Both are sampled as `surfaceDistance()` does, with `subdivisions`
+///        steps per edge; so the marked triangles are those a two-sided
+///        distance above `limit` is measured at.
+/// \pre Finite coordinates (`checkSurface()`).
+std::vector<char> trianglesFartherThan(
+  const TriangleMesh& surface, const TriangleMesh& remesh, double limit, int subdivisions = 3);
+
 // `boundingBoxDiagonal(const TriangleMesh&)`, the usual scale for these
 // distances, is declared in TriangleMesh.h.
 

@@ -1,12 +1,14 @@
 #include <cmp/remesh/Remesh.h>
 
 #include <cmp/mesh/SurfaceDistance.h>
+#include <cmp/mesh/TriangleMesh.h>
 #include <cmp/mesh/TriangleShape.h>
 #include <cmp/remesh/SampleRelaxation.h>
 
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <functional>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -72,8 +74,11 @@ void measureDistance(
 }
 
 /// The shared connectivity on one model: placed, repaired, measured.
+/// With `far`, also marks the triangles where the placed remesh lies
+/// farther from the model than the adaptive tolerance.
 Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const std::vector<int>& nearestLandmarks,
-  const RemeshModel& model, const RemeshOptions& options, RemeshedModel& placed, RemeshModelReport& figures)
+  const RemeshModel& model, const RemeshOptions& options, RemeshedModel& placed, RemeshModelReport& figures,
+  std::vector<char>* far)
 {
   const Clock::time_point start = Clock::now();
   const TracedNet& net = model.map->net();
@@ -105,7 +110,173 @@ Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const s
     foldsNearLandmarks(nearestLandmarks, static_cast<int>(domain.featureIds.size()), placed.folded);
   if (options.computeDistance)
     measureDistance(domain, model, inSpace, figures);
+  if (far)
+    *far = trianglesFartherThan(
+      *model.surface, inSpace, options.adaptiveTolerance * boundingBoxDiagonal(*model.surface));
   figures.seconds = secondsSince(start);
+  return {};
+}
+
+/// Adaptive remeshing makes the connectivity at most this many times
+/// (`remesh()`): the first, then again while a placed remesh is farther
+/// from a model than the tolerance.
+constexpr int kAdaptivePasses = 3;
+
+/// A place of the base domain where a placed adaptive remesh missed a
+/// model: the leaf triangle there, of level `level`, is to be split.
+struct RefineMark
+{
+  int patch = -1; ///< Base triangle.
+  Vec2 at;        ///< The leaf's centroid, (c1, c2) in `patch`.
+  int level = 0;  ///< The leaf's level: nodes down to it that hold `at` split.
+};
+
+/// The marks of the triangles `far` marks of `mesh` (the connectivity as
+/// built, before its samples were relaxed: its corners are the tree's).
+void addRefineMarks(
+  const BaseDomain& domain, const SemiRegularMesh& mesh, const std::vector<char>& far, std::vector<RefineMark>& marks)
+{
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t)
+  {
+    if (!far[t])
+      continue;
+    RefineMark mark;
+    mark.patch = mesh.patchOfTriangle[t];
+    std::array<Vec2, 3> corner;
+    bool located = true;
+    for (int k = 0; k < 3; ++k)
+      located = located && locationInBaseTriangle(domain, mesh.locations[mesh.triangles[t][k]], mark.patch, corner[k]);
+    if (!located)
+      continue;
+    mark.at = (corner[0] + corner[1] + corner[2]) / 3.0;
+    // Its share of the base triangle ((c1, c2) area 1/2) is 4^-level, or
+    // half that for a bisected leaf's half.
+    const double share = std::abs(cross2(corner[1] - corner[0], corner[2] - corner[0]));
+    if (!(share > 0.0))
+      continue;
+    mark.level = static_cast<int>(std::floor(std::log(1.0 / share) / std::log(4.0) + 1e-6));
+    marks.push_back(mark);
+  }
+}
+
+/// Whether the plane triangle `corners` holds `p` (on its sides too).
+bool holds(const std::array<Vec2, 3>& corners, const Vec2& p)
+{
+  const double tolerance = 1e-12;
+  const double area = cross2(corners[1] - corners[0], corners[2] - corners[0]);
+  for (int k = 0; k < 3; ++k)
+    if (cross2(corners[(k + 1) % 3] - corners[k], p - corners[k]) * (area < 0.0 ? -1.0 : 1.0) < -tolerance)
+      return false;
+  return true;
+}
+
+/// `flatness`, and a split of every node down to a mark's level that holds
+/// the mark.
+SplitRule refinedSplitRule(SplitRule flatness, std::vector<RefineMark> marks)
+{
+  return [flatness = std::move(flatness), marks = std::move(marks)](
+           const std::array<SurfacePoint, 3>& corners, int level) {
+    std::array<Vec2, 3> at;
+    for (int k = 0; k < 3; ++k)
+      at[k] = Vec2(corners[k].weight[1], corners[k].weight[2]);
+    for (const RefineMark& mark : marks)
+      if (mark.patch == corners[0].triangle && level <= mark.level && holds(at, mark.at))
+        return true;
+    return flatness(corners, level);
+  };
+}
+
+/// Per triangle of the shared connectivity, 1 where the remesh as placed on
+/// any model of any rank lies farther from it than the tolerance (`far`:
+/// this rank's models' marks).
+std::vector<char> farTrianglesOverRanks(
+  const std::vector<std::vector<char>>& far, std::size_t triangles, Communicator& communicator)
+{
+  std::vector<double> count(triangles, 0.0);
+  for (const std::vector<char>& model : far)
+    for (std::size_t t = 0; t < triangles && t < model.size(); ++t)
+      count[t] += model[t];
+  communicator.allReduceSum(count.data(), count.size());
+  std::vector<char> marked(triangles, 0);
+  for (std::size_t t = 0; t < triangles; ++t)
+    marked[t] = count[t] > 0.0;
+  return marked;
+}
+
+/// Relaxes `result.mesh`'s samples over every model (collective, with
+/// relaxation) and places it on each of this rank's models; `progress`
+/// gets the fraction of the models placed. `status` is the caller's so far.
+/// With `far`, each model's far triangles (`placeModel()`) go there.
+Status placeCollection(const BaseDomain& domain, const std::vector<RemeshModel>& localModels,
+  const std::vector<const ParameterizedSurface*>& surfaces, Communicator& communicator, const RemeshOptions& options,
+  Status status, const std::function<void(double)>& progress, CollectionRemesh& result, RemeshReport& local,
+  std::vector<std::vector<char>>* far)
+{
+  if (far)
+    far->assign(localModels.size(), {});
+  const bool relax = options.sampleRelaxationIterations > 0;
+  if (relax)
+    status = agreeOnStatus(status, communicator);
+  if (!status.ok())
+    return status;
+  if (relax)
+  {
+    const Clock::time_point start = Clock::now();
+    SampleRelaxationOptions relaxation;
+    relaxation.iterations = options.sampleRelaxationIterations;
+    SampleRelaxationReport relaxed;
+    if (Status s = relaxSampleLocations(domain, surfaces, communicator, result.mesh, relaxation, &relaxed); !s.ok())
+      return Status::error("sample relaxation: " + s.message());
+    local.sampleRelaxationRounds = relaxed.iterations;
+    local.sampleRelaxationSeconds = secondsSince(start);
+  }
+
+  const std::vector<int> nearestLandmarks = nearestLandmarkOfTriangles(result.mesh, domain.mesh.vertexCount());
+  result.models.assign(localModels.size(), RemeshedModel{});
+  local.models.assign(localModels.size(), RemeshModelReport{});
+  // Each model is placed on its own: a thread takes the next model not yet
+  // taken, and the calling thread (the only one to report progress) works
+  // too. The first model that fails, in the order given, is reported.
+  const int count = static_cast<int>(localModels.size());
+  const int threadCount = std::clamp(
+    options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
+    std::max(1, count));
+  std::vector<Status> placed(localModels.size());
+  std::atomic<int> next{ 0 };
+  std::atomic<int> done{ 0 };
+  int reported = 0; // models done when the calling thread last reported progress
+  const auto work = [&](bool reportProgress) {
+    for (int m = next++; m < count; m = next++)
+    {
+      try
+      {
+        placed[m] = placeModel(domain, result.mesh, nearestLandmarks, localModels[m], options, result.models[m],
+          local.models[m], far ? &(*far)[m] : nullptr);
+      }
+      catch (const std::exception& error)
+      {
+        placed[m] = Status::error(std::string("placing the remesh failed: ") + error.what());
+      }
+      const int finished = ++done;
+      if (reportProgress && progress && finished > reported)
+      {
+        reported = finished;
+        progress(static_cast<double>(finished) / count);
+      }
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threadCount; ++t)
+    helpers.emplace_back(work, false);
+  work(true);
+  for (std::thread& helper : helpers)
+    helper.join();
+  for (int m = 0; m < count; ++m)
+    if (!placed[m].ok())
+    {
+      local.failedModel = m;
+      return placed[m];
+    }
   return {};
 }
 
@@ -150,81 +321,60 @@ Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localMod
   }
 
   // One connectivity for the whole collection: with a tolerance, a
-  // triangle is split when any model needs it.
-  if (status.ok())
-    status = options.adaptiveTolerance > 0.0
-      ? buildAdaptiveSemiRegularMesh(
-          domain, options.level, flatnessSplitRule(surfaces, options.adaptiveTolerance), result.mesh)
-      : buildSemiRegularMesh(domain, options.level, result.mesh);
-  const bool relax = options.sampleRelaxationIterations > 0;
-  if (relax)
-    status = agreeOnStatus(status, communicator);
-  if (!status.ok())
-    return status;
-  if (relax)
+  // triangle is split when any model needs it. The split rule probes the
+  // models' maps before the samples are relaxed, placed and repaired, which
+  // moves them; so where the remesh as placed on some model is still
+  // farther from it than the tolerance, the connectivity is made again with
+  // the triangles there split once more.
+  const bool adaptive = options.adaptiveTolerance > 0.0;
+  const bool checked = adaptive && options.computeDistance;
+  std::vector<RefineMark> marks;
+  double lastProgress = 0.0;
+  for (int pass = 1;; ++pass)
   {
-    const Clock::time_point start = Clock::now();
-    SampleRelaxationOptions relaxation;
-    relaxation.iterations = options.sampleRelaxationIterations;
-    SampleRelaxationReport relaxed;
-    if (Status s = relaxSampleLocations(domain, surfaces, communicator, result.mesh, relaxation, &relaxed); !s.ok())
-      return Status::error("sample relaxation: " + s.message());
-    local.sampleRelaxationRounds = relaxed.iterations;
-    local.sampleRelaxationSeconds = secondsSince(start);
-  }
-
-  const std::vector<int> nearestLandmarks = nearestLandmarkOfTriangles(result.mesh, domain.mesh.vertexCount());
-  result.models.resize(localModels.size());
-  // Each model is placed on its own: a thread takes the next model not yet
-  // taken, and the calling thread (the only one to report progress) works
-  // too. The first model that fails, in the order given, is reported.
-  const int count = static_cast<int>(localModels.size());
-  const int threadCount = std::clamp(
-    options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
-    std::max(1, count));
-  std::vector<Status> placed(localModels.size());
-  std::atomic<int> next{ 0 };
-  std::atomic<int> done{ 0 };
-  int reported = 0; // models done when the calling thread last reported progress
-  const auto work = [&](bool reportProgress) {
-    for (int m = next++; m < count; m = next++)
+    SemiRegularMesh connectivity;
+    if (status.ok())
+      status = !adaptive ? buildSemiRegularMesh(domain, options.level, connectivity)
+        : buildAdaptiveSemiRegularMesh(domain, options.level,
+            refinedSplitRule(flatnessSplitRule(surfaces, options.adaptiveTolerance), marks), connectivity);
+    if (status.ok() && pass > 1 && connectivity.triangles.size() == result.mesh.triangles.size())
+      break; // the far triangles are at the maximum level: the last pass stands
+    const SemiRegularMesh built = checked ? connectivity : SemiRegularMesh{};
+    // Progress runs once over all the passes there may be.
+    const std::function<void(double)> progress = !options.progress ? std::function<void(double)>()
+      : [&, pass](double fraction) {
+          lastProgress = checked ? (pass - 1 + fraction) / kAdaptivePasses : fraction;
+          options.progress(lastProgress);
+        };
+    CollectionRemesh attempt;
+    attempt.mesh = std::move(connectivity);
+    RemeshReport figures = local;
+    // The last pass that may be followed by another marks far triangles.
+    const bool mayRefine = checked && pass < kAdaptivePasses;
+    std::vector<std::vector<char>> farOnModels;
+    if (Status s = placeCollection(domain, localModels, surfaces, communicator, options, status, progress, attempt,
+          figures, mayRefine ? &farOnModels : nullptr);
+        !s.ok())
     {
-      try
-      {
-        placed[m] = placeModel(domain, result.mesh, nearestLandmarks, localModels[m], options, result.models[m],
-          local.models[m]);
-      }
-      catch (const std::exception& error)
-      {
-        placed[m] = Status::error(std::string("placing the remesh failed: ") + error.what());
-      }
-      const int finished = ++done;
-      if (reportProgress && options.progress && finished > reported)
-      {
-        reported = finished;
-        options.progress(static_cast<double>(finished) / count);
-      }
+      if (report && figures.failedModel >= 0)
+        *report = std::move(figures);
+      return s;
     }
-  };
-  std::vector<std::thread> helpers;
-  for (int t = 1; t < threadCount; ++t)
-    helpers.emplace_back(work, false);
-  work(true);
-  for (std::thread& helper : helpers)
-    helper.join();
-  for (int m = 0; m < count; ++m)
-  {
-    if (!placed[m].ok())
+    result = std::move(attempt);
+    local = std::move(figures);
+    if (adaptive)
     {
-      if (report)
-      {
-        *report = std::move(local);
-        report->failedModel = m;
-      }
-      return placed[m];
+      local.adaptivePasses = pass;
+      local.adaptiveTriangles.push_back(static_cast<int>(result.mesh.triangles.size()));
     }
+    if (!mayRefine)
+      break;
+    const std::vector<char> far = farTrianglesOverRanks(farOnModels, result.mesh.triangles.size(), communicator);
+    if (std::find(far.begin(), far.end(), 1) == far.end())
+      break;
+    addRefineMarks(domain, built, far, marks);
   }
-  if (options.progress && reported < count)
+  if (options.progress && lastProgress < 1.0)
     options.progress(1.0);
   out = std::move(result);
   if (report)

@@ -35,7 +35,13 @@ struct RemeshOptions
   /// \brief 0: uniform refinement. t > 0: adaptive, a triangle is split
   ///        while on any model the surface at one of its edge midpoints or
   ///        its centroid is farther than t times that model's bounding-box
-  ///        diagonal from the flat triangle (`flatnessSplitRule()`).
+  ///        diagonal from the flat triangle (`flatnessSplitRule()`). With
+  ///        `computeDistance`, the tolerance holds for the remesh as placed
+  ///        (relaxed and repaired), as far as `level` allows: where on some
+  ///        model it lies farther than t times the diagonal
+  ///        (`trianglesFartherThan()`), the triangles there are split once
+  ///        more and the connectivity made again, three times at most in all
+  ///        (`RemeshReport::adaptivePasses`).
   double adaptiveTolerance = 0.0;
   /// \brief Rounds of `relaxSampleLocations()` over every model (0: none;
   ///        its other options at their defaults).
@@ -128,7 +134,14 @@ struct RemeshModelReport
 /// \brief What `remesh()` did.
 struct RemeshReport
 {
-  int sampleRelaxationRounds = 0;       ///< Rounds of sample relaxation made.
+  int sampleRelaxationRounds = 0;       ///< Rounds of sample relaxation made (in the last pass).
+  /// \brief Adaptive remeshing: how many times the connectivity was made
+  ///        (1 when the first placed remesh is within the tolerance on every
+  ///        model; 0 for a uniform remesh).
+  int adaptivePasses = 0;
+  /// \brief Adaptive remeshing: the connectivity's triangles after each
+  ///        pass (the last one is the result's).
+  std::vector<int> adaptiveTriangles;
   double sampleRelaxationSeconds = 0.0; ///< Their time (the whole collection's).
   /// \brief The model whose placement or fold repair failed, -1 if none
   ///        did (the message then is that model's).
