@@ -59,19 +59,21 @@ from .arguments import parse_arguments, prepare_output_folder
 from .figures import describe_base_domain
 from .isolation import polydata_from_text, polydata_to_text, run_in_child, run_model_stages
 from .ranks import default_jobs, this_job
-from .render import run_pictures
+from .collection_stages import (
+    blend_grid_isolated,
+    blend_isolated,
+    details_isolated,
+    pca_isolated,
+    pictures_isolated,
+    remesh_isolated,
+    transfer_isolated,
+)
 from .stages import (
     Model,
     build_base_domain,
     check_against_base_domain,
     load_base_domain,
     read_landmarked_surface,
-    remesh_collection,
-    run_blend,
-    run_blend_grid,
-    run_details,
-    run_pca,
-    run_transfer,
     straighten_net,
     trace_net,
 )
@@ -249,8 +251,9 @@ def _base_domain(args, models, ranks, report):
 
 def _collection_stages(args, models, domain, report, started, clock):
     """Rank 0's part once every model is straightened: the collection's
-    remesh, the stages on it, the pictures and the report; the exit
-    status."""
+    remesh, the stages on it, the pictures (each in a child process, so a
+    crash fails that stage alone: collection_stages) and the report; the
+    exit status."""
     # One run of the remesher for the whole collection: one connectivity.
     ready = [m for m in models if m.parameterized is not None]
     remeshes = None
@@ -261,8 +264,8 @@ def _collection_stages(args, models, domain, report, started, clock):
         print("remeshing %d model%s at level %d%s"
               % (len(ready), "" if len(ready) == 1 else "s", args.level, adaptive), flush=True)
         try:
-            remeshes, figures = remesh_collection(ready, domain, args.level, args.adaptive_tolerance, args.output,
-                                                   not args.no_fold_repair, args.relax_samples)
+            remeshes, figures = remesh_isolated(ready, domain, args.level, args.adaptive_tolerance, args.output,
+                                                not args.no_fold_repair, args.relax_samples)
             report["remesh"].update(figures)
             for model in ready:
                 model.report["status"] = "ok"
@@ -272,30 +275,30 @@ def _collection_stages(args, models, domain, report, started, clock):
             for model in ready:
                 model.fail("remeshing the collection failed: %s" % error)
         if args.transfer_from is not None:
-            report["transfer"] = run_transfer(args.transfer_from, ready, remeshes, domain, args.output)
+            report["transfer"] = transfer_isolated(args.transfer_from, ready, remeshes, domain, args.output)
         if args.details_from is not None:
-            report["details"] = run_details(args.details_from, ready, remeshes, args.output)
+            report["details"] = details_isolated(args.details_from, ready, remeshes, args.output)
 
     # What each stage's pictures need, for the stages that gave a result.
     stages = {}
     if "transfer" in report and "error" not in report["transfer"]:
         stages["transfer"] = (report["transfer"], remeshes)
     if args.pca is not None:
-        report["pca"], mean = run_pca(args.pca, ready, remeshes, args.output)
+        report["pca"], mean = pca_isolated(args.pca, ready, remeshes, args.output)
         if mean is not None:
             stages["pca"] = (mean, report["pca"])
     if args.blend:
-        report["blend_grid"], grid = run_blend_grid(ready, remeshes, args.output, args.blend_alignment)
+        report["blend_grid"], grid = blend_grid_isolated(ready, remeshes, args.output, args.blend_alignment)
         if grid is not None:
             stages["blend_grid"] = (grid, report["blend_grid"]["models"])
     if args.blend_weights is not None:
-        report["blend"], blend = run_blend(args.blend_weights, models, ready, remeshes, args.output,
-                                           args.blend_alignment)
+        report["blend"], blend = blend_isolated(args.blend_weights, models, ready, remeshes, args.output,
+                                                args.blend_alignment)
         if blend is not None:
             stages["blend"] = (blend, args.blend_weights)
     if ready:
         stages["overview"] = (ready, remeshes)
-        report["renders"] = run_pictures(args, stages, models)
+        report["renders"] = pictures_isolated(args, stages, models)
 
     for model in models:
         report["models"][model.name] = model.report

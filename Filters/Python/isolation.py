@@ -16,7 +16,8 @@ A child that has not finished after the timeout (consistent-remesh
 --model-timeout) is killed, and the stage fails with "timed out after N s".
 
 For the tests, CMP_TEST_CRASH=STAGE:NAME:SIGNAL[,...] makes the child of
-model NAME's stage STAGE (read or process) kill itself with SIGNAL (for
+model NAME's stage STAGE (read or process; for the collection's stages
+NAME is "collection", see collection_stages) kill itself with SIGNAL (for
 example SIGSEGV or SIGABRT; SIGSEGV for a name the signal module does not
 know) before it starts: a crash that no input file is needed for. SIGNAL
 HANG makes it sleep for a day instead: a hang."""

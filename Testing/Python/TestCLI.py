@@ -1160,7 +1160,8 @@ def case_crash_isolation(tmp):
     Surface Reader checked its compressed values; the others are remeshed
     and the report is written. A base domain file that makes VTK's reader
     abort (--base-domain reads .vtp with it, unchecked) gives no base
-    domain, and the report."""
+    domain, and the report. A crash in a collection stage (the remesh, the
+    PCA, the pictures) fails that stage, and the report is written."""
     crashing = write_compressed_vtp(os.path.join(tmp, "crashing.vtp"), 2 ** 41)
     six = write_text(os.path.join(tmp, "six.txt"), "0\n1\n2\n3\n4\n5\n")
     good = [(shrec("381", "off"), shrec("381", "vts")), (shrec("384", "off"), shrec("384", "vts"))]
@@ -1203,6 +1204,37 @@ def case_crash_isolation(tmp):
                    "base domain error")
     for name in ("381", "384"):
         check_contains(report["models"][name].get("error", ""), "no base domain", "error of " + name)
+
+    # The collection's stages run in children too: a crash while remeshing
+    # fails the remesh (and so every model) with the reason; a crash in a
+    # stage on the remeshes (PCA, the pictures) fails that stage alone.
+    # Either way the report is written.
+    out = os.path.join(tmp, "out-remesh")
+    status, stdout, stderr, report = run_cli(
+        model_arguments(good) + ["--base-domain-from", "0", "--level", "1", "--no-render"], out,
+        environment={"CMP_TEST_CRASH": "remesh:collection:SIGSEGV"})
+    check(report is not None, "no report.json after the remesh crashed (stderr: %s)" % stderr)
+    check_equal(status, 1, "exit status with a crashed remesh (stderr: %s)" % stderr)
+    crashed = "crashed while remeshing the collection: the process doing it was killed by SIGSEGV"
+    check_contains(report["remesh"].get("error", ""), crashed, "remesh error")
+    for name in ("381", "384"):
+        check_equal(report["models"][name].get("status"), "failed", "status of " + name)
+        check_contains(report["models"][name].get("error", ""), crashed, "error of " + name)
+        check_straightened(out, name, report["models"][name])
+    out = os.path.join(tmp, "out-pca")
+    status, stdout, stderr, report = run_cli(
+        model_arguments(good) + ["--base-domain-from", "0", "--level", "1", "--pca", "1", "--no-render"], out,
+        environment={"CMP_TEST_CRASH": "pca:collection:SIGABRT,pictures:collection:SIGSEGV"})
+    check(report is not None, "no report.json after the PCA crashed (stderr: %s)" % stderr)
+    check_equal(status, 1, "exit status with a crashed PCA (stderr: %s)" % stderr)
+    check_contains(report["pca"].get("error", ""),
+                   "crashed while analysing the collection (PCA): the process doing it was killed by SIGABRT",
+                   "PCA error")
+    check_contains(report["renders"].get("errors", {}).get("pictures", ""),
+                   "crashed while drawing the pictures: the process doing it was killed by SIGSEGV",
+                   "pictures error")
+    check_equal(report["failed"], [], "failed models after a crashed PCA")
+    check_remeshed(out, report, stdout, ["381", "384"], 1)
 
 
 def case_model_timeout(tmp):
