@@ -164,8 +164,8 @@ def main(argv=None):
     if ranks.size > 1:
         # Every rank's models to rank 0, which does the rest; the others end
         # with its exit status. A model straightened on another rank than
-        # the one that read it keeps the reader's times too (the base
-        # domain's).
+        # the one that read it keeps the reader's figures and times too
+        # (the base domain's).
         sent = [(index, "read", model.report, None, None) for index, model in mine if index not in processed]
         sent += [(index, "processed", model.report, polydata_to_text(model.parameterized),
                   polydata_to_text(model.curves)) for index, model in sorted(processed.items())]
@@ -176,10 +176,16 @@ def main(argv=None):
         entries = [entry for part in parts for entry in part]
         for index, kind, model_report, parameterized, curves in sorted(entries, key=lambda e: e[1] == "processed"):
             model = models[index]
-            reader_seconds = model.report["seconds"] if kind == "processed" else {}
+            if kind == "processed":
+                # Over what its reader found (the reader's entry came
+                # first): a model whose processing crashed on another rank
+                # than the reader's still has its read figures, in the order
+                # one process would have written them.
+                merged = dict(model.report)
+                merged.update(model_report)
+                merged["seconds"] = dict(model.report.get("seconds", {}), **model_report.get("seconds", {}))
+                model_report = merged
             model.report = model_report
-            for stage, seconds in reader_seconds.items():
-                model.report["seconds"].setdefault(stage, seconds)
             model.parameterized = polydata_from_text(parameterized)
             model.curves = polydata_from_text(curves)
     status = 1
