@@ -59,15 +59,7 @@ from .arguments import parse_arguments, prepare_output_folder
 from .figures import describe_base_domain
 from .isolation import polydata_from_text, polydata_to_text, run_in_child, run_model_stages
 from .ranks import default_jobs, this_job
-from .collection_stages import (
-    blend_grid_isolated,
-    blend_isolated,
-    details_isolated,
-    pca_isolated,
-    pictures_isolated,
-    remesh_isolated,
-    transfer_isolated,
-)
+from .collection_stages import run_collection_stages
 from .stages import (
     Model,
     build_base_domain,
@@ -257,55 +249,13 @@ def _base_domain(args, models, ranks, report):
 
 def _collection_stages(args, models, domain, report, started, clock):
     """Rank 0's part once every model is straightened: the collection's
-    remesh, the stages on it, the pictures (each in a child process, so a
-    crash fails that stage alone: collection_stages) and the report; the
-    exit status."""
-    # One run of the remesher for the whole collection: one connectivity.
+    remesh, the stages on it and the pictures, all in one child process
+    (a crash there makes them run again, each in a child of its own, so
+    that it fails that stage alone: collection_stages), then the report;
+    the exit status."""
     ready = [m for m in models if m.parameterized is not None]
-    remeshes = None
-    report["remesh"] = {"level": args.level, "adaptive_tolerance": args.adaptive_tolerance,
-                        "models": [m.name for m in ready]}
-    if ready:
-        adaptive = " (adaptive, tolerance %g)" % args.adaptive_tolerance if args.adaptive_tolerance > 0 else ""
-        print("remeshing %d model%s at level %d%s"
-              % (len(ready), "" if len(ready) == 1 else "s", args.level, adaptive), flush=True)
-        try:
-            remeshes, figures = remesh_isolated(ready, domain, args.level, args.adaptive_tolerance, args.output,
-                                                not args.no_fold_repair, args.relax_samples)
-            report["remesh"].update(figures)
-            for model in ready:
-                model.report["status"] = "ok"
-        except StageError as error:
-            remeshes = None
-            report["remesh"]["error"] = str(error)
-            for model in ready:
-                model.fail("remeshing the collection failed: %s" % error)
-        if args.transfer_from is not None:
-            report["transfer"] = transfer_isolated(args.transfer_from, ready, remeshes, domain, args.output)
-        if args.details_from is not None:
-            report["details"] = details_isolated(args.details_from, ready, remeshes, args.output)
-
-    # What each stage's pictures need, for the stages that gave a result.
-    stages = {}
-    if "transfer" in report and "error" not in report["transfer"]:
-        stages["transfer"] = (report["transfer"], remeshes)
-    if args.pca is not None:
-        report["pca"], mean = pca_isolated(args.pca, ready, remeshes, args.output)
-        if mean is not None:
-            stages["pca"] = (mean, report["pca"])
-    if args.blend:
-        report["blend_grid"], grid = blend_grid_isolated(ready, remeshes, args.output, args.blend_alignment)
-        if grid is not None:
-            stages["blend_grid"] = (grid, report["blend_grid"]["models"])
-    if args.blend_weights is not None:
-        report["blend"], blend = blend_isolated(args.blend_weights, models, ready, remeshes, args.output,
-                                                args.blend_alignment)
-        if blend is not None:
-            stages["blend"] = (blend, args.blend_weights)
-    if ready:
-        stages["overview"] = (ready, remeshes)
-        report["renders"] = pictures_isolated(args, stages, models)
-
+    report.update(run_collection_stages(lambda stages: _collection_work(args, models, ready, domain, stages),
+                                        models))
     for model in models:
         report["models"][model.name] = model.report
     failed = [m.name for m in models if m.report.get("status") != "ok"]
@@ -327,3 +277,55 @@ def _collection_stages(args, models, domain, report, started, clock):
     stage_failed = any("error" in report.get(key, {})
                        for key in ("transfer", "details", "pca", "blend_grid", "blend"))
     return 1 if failed or stage_failed or "errors" in report.get("renders", {}) else 0
+
+
+def _collection_work(args, models, ready, domain, stages):
+    """The collection's stages, run with `stages` (collection_stages.DIRECT
+    or ISOLATED): the report's entries they make. Fills the models' reports."""
+    # One run of the remesher for the whole collection: one connectivity.
+    remeshes = None
+    report = {}
+    report["remesh"] = {"level": args.level, "adaptive_tolerance": args.adaptive_tolerance,
+                        "models": [m.name for m in ready]}
+    if ready:
+        adaptive = " (adaptive, tolerance %g)" % args.adaptive_tolerance if args.adaptive_tolerance > 0 else ""
+        print("remeshing %d model%s at level %d%s"
+              % (len(ready), "" if len(ready) == 1 else "s", args.level, adaptive), flush=True)
+        try:
+            remeshes, figures = stages.remesh(ready, domain, args.level, args.adaptive_tolerance, args.output,
+                                              not args.no_fold_repair, args.relax_samples)
+            report["remesh"].update(figures)
+            for model in ready:
+                model.report["status"] = "ok"
+        except StageError as error:
+            remeshes = None
+            report["remesh"]["error"] = str(error)
+            for model in ready:
+                model.fail("remeshing the collection failed: %s" % error)
+        if args.transfer_from is not None:
+            report["transfer"] = stages.transfer(args.transfer_from, ready, remeshes, domain, args.output)
+        if args.details_from is not None:
+            report["details"] = stages.details(args.details_from, ready, remeshes, args.output)
+
+    # What each stage's pictures need, for the stages that gave a result.
+    drawn = {}
+    if "transfer" in report and "error" not in report["transfer"]:
+        drawn["transfer"] = (report["transfer"], remeshes)
+    if args.pca is not None:
+        report["pca"], mean = stages.pca(args.pca, ready, remeshes, args.output)
+        if mean is not None:
+            drawn["pca"] = (mean, report["pca"])
+    if args.blend:
+        report["blend_grid"], grid = stages.blend_grid(ready, remeshes, args.output, args.blend_alignment)
+        if grid is not None:
+            drawn["blend_grid"] = (grid, report["blend_grid"]["models"])
+    if args.blend_weights is not None:
+        report["blend"], blend = stages.blend(args.blend_weights, models, ready, remeshes, args.output,
+                                              args.blend_alignment)
+        if blend is not None:
+            drawn["blend"] = (blend, args.blend_weights)
+    if ready:
+        drawn["overview"] = (ready, remeshes)
+        report["renders"] = stages.pictures(args, drawn, models)
+
+    return report

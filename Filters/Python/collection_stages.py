@@ -1,20 +1,25 @@
-"""consistent-remesh's collection stages, each in a child process.
+"""consistent-remesh's collection stages, in child processes.
 
 Once every model is straightened, the collection's remesh, the stages on
 it (texture and detail transfer, PCA, blends) and the pictures run on the
-collection as a whole. Each runs in a forked child (isolation.run_in_child),
-so that a crash inside a library (a segfault, an abort) fails that stage
-with the reason instead of killing the run: the report is still written,
-with every model's figures up to that stage. The child sends its results
-back as text (.vtp) and the figures it made.
+collection as a whole: all of them in one forked child
+(run_collection_stages), which sends back only its figures. Should that
+child crash inside a library (a segfault, an abort), they run again, each
+in a child of its own (the *_isolated functions, ISOLATED), so that the
+crash fails that stage alone with the reason instead of killing the run:
+the report is still written, with every model's figures up to that stage.
+Those children send their results back as text (.vtp) with their figures.
 
 CMP_TEST_CRASH (see isolation) names these stages STAGE:collection, STAGE
-one of remesh, transfer, details, pca, blend_grid, blend and pictures.
+one of remesh, transfer, details, pca, blend_grid, blend and pictures: the
+stage crashes in the shared child and again in its own.
 """
+
+from types import SimpleNamespace
 
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet
 
-from .isolation import polydata_from_text, polydata_to_text, run_in_child
+from .isolation import crash_for_the_test, polydata_from_text, polydata_to_text, run_in_child
 from .render import run_pictures
 from .stages import remesh_collection, run_blend, run_blend_grid, run_details, run_pca, run_transfer
 from .vtkio import StageError
@@ -116,3 +121,42 @@ def pictures_isolated(args, stages, models):
     """render.run_pictures in a child: the report's "renders"."""
     return _in_child("pictures", "drawing the pictures", lambda: run_pictures(args, stages, models),
                      lambda message: {"files": [], "seconds": 0.0, "errors": {"pictures": message}})
+
+
+def _direct(stage, function):
+    """`function` as it is, but for the CMP_TEST_CRASH hook of `stage`."""
+    def run(*arguments):
+        crash_for_the_test(stage, COLLECTION)
+        return function(*arguments)
+    return run
+
+
+# The stages run in the process that calls them (the shared child) ...
+DIRECT = SimpleNamespace(remesh=_direct("remesh", remesh_collection), transfer=_direct("transfer", run_transfer),
+                         details=_direct("details", run_details), pca=_direct("pca", run_pca),
+                         blend_grid=_direct("blend_grid", run_blend_grid), blend=_direct("blend", run_blend),
+                         pictures=_direct("pictures", run_pictures))
+# ... and each in a child of its own.
+ISOLATED = SimpleNamespace(remesh=remesh_isolated, transfer=transfer_isolated, details=details_isolated,
+                           pca=pca_isolated, blend_grid=blend_grid_isolated, blend=blend_isolated,
+                           pictures=pictures_isolated)
+
+
+def run_collection_stages(work, models):
+    """`work(DIRECT)` (the collection's stages, returning the report's
+    entries they make and filling the models' reports) in one child: its
+    entries, the models' reports set as the child left them. If that child
+    crashed, `work(ISOLATED)` here instead, each stage in a child of its
+    own, so that the crash fails its stage alone."""
+    def child():
+        entries = work(DIRECT)
+        return entries, [model.report for model in models]
+
+    try:
+        entries, reports = run_in_child("collection", COLLECTION, child, "running the collection's stages")
+    except StageError as error:
+        print("the collection's stages: %s; running them again, each in a process of its own" % error, flush=True)
+        return work(ISOLATED)
+    for model, report in zip(models, reports):
+        model.report = report
+    return entries

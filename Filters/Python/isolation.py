@@ -70,7 +70,7 @@ def _signal_description(number):
     return "%s, %s" % (name, description) if description else name
 
 
-def _crash_for_the_test(stage, name):
+def crash_for_the_test(stage, name):
     """The CMP_TEST_CRASH hook (see the module's description)."""
     for entry in os.environ.get("CMP_TEST_CRASH", "").split(","):
         parts = entry.strip().split(":")
@@ -86,7 +86,7 @@ def _child(write_end, stage, name, function):
     the process without running this interpreter's exit handlers."""
     code = 0
     try:
-        _crash_for_the_test(stage, name)
+        crash_for_the_test(stage, name)
         try:
             outcome = ("ok", function())
         except StageError as error:
