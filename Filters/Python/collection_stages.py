@@ -26,6 +26,8 @@ from .vtkio import StageError
 
 # The name CMP_TEST_CRASH knows the collection stages by.
 COLLECTION = "collection"
+# How run_in_child's message of a child that died begins.
+CRASHED = "crashed while "
 
 
 def _in_child(stage, doing, function, failed):
@@ -146,8 +148,9 @@ def run_collection_stages(work, models):
     """`work(DIRECT)` (the collection's stages, returning the report's
     entries they make and filling the models' reports) in one child: its
     entries, the models' reports set as the child left them. If that child
-    crashed, `work(ISOLATED)` here instead, each stage in a child of its
-    own, so that the crash fails its stage alone."""
+    crashed (died by a signal or exited abnormally), `work(ISOLATED)` here
+    instead, each stage in a child of its own, so that the crash fails its
+    stage alone; any other StageError (a bug) is raised."""
     def child():
         entries = work(DIRECT)
         return entries, [model.report for model in models]
@@ -155,7 +158,9 @@ def run_collection_stages(work, models):
     try:
         entries, reports = run_in_child("collection", COLLECTION, child, "running the collection's stages")
     except StageError as error:
-        print("the collection's stages: %s; running them again, each in a process of its own" % error, flush=True)
+        if not str(error).startswith(CRASHED):
+            raise  # a bug, not a crash: running the stages again would hide it
+        print("the collection's stages %s; running them again, each in a process of its own" % error, flush=True)
         return work(ISOLATED)
     for model, report in zip(models, reports):
         model.report = report

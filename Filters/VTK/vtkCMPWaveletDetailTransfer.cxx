@@ -106,7 +106,7 @@ cmp::Status buildTransform(const cmp::bridge::ConsistentCollection& collection, 
   mesh.triangles = collection.triangles;
   mesh.levelOfVertex = coarse.vertexLevels;
   mesh.levelOfTriangle = coarse.triangleLevels;
-  mesh.locations.resize(collection.pointCount);
+  mesh.locations.resize(collection.pointCount); // the transform reads no base location: left unset
   mesh.level = mesh.levelOfTriangle.empty()
     ? 0
     : *std::max_element(mesh.levelOfTriangle.begin(), mesh.levelOfTriangle.end());

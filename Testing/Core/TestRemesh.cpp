@@ -303,3 +303,30 @@ TEST_F(RemeshOfSpheres, ARankThatFailsBeforeRelaxingStopsEveryRank)
     EXPECT_NE(status.message().find("model 0 is missing"), std::string::npos) << status.message();
   });
 }
+
+TEST_F(RemeshOfSpheres, RanksMakeTheSamePassesOfAnAdaptiveRemesh)
+{
+  // Every rank holds both spheres (the same connectivity, which relaxation
+  // checks): the passes that split far triangles share the far triangles
+  // over the ranks and must end alike on every rank, in the same number of
+  // passes as one process.
+  RemeshOptions options;
+  options.level = 6;
+  options.adaptiveTolerance = 0.002;
+  options.sampleRelaxationIterations = 2;
+  options.threads = 1;
+  CollectionRemesh alone;
+  RemeshReport aloneReport;
+  ASSERT_TRUE(remesh(domain_, models(), alone, options, &aloneReport).ok());
+  ASSERT_GE(aloneReport.adaptivePasses, 2);
+  std::mutex mutex;
+  test::runOnRanks(2, [&](Communicator& communicator) {
+    CollectionRemesh out;
+    RemeshReport report;
+    const Status status = remesh(domain_, models(), communicator, out, options, &report);
+    const std::lock_guard<std::mutex> lock(mutex);
+    ASSERT_TRUE(status.ok()) << "rank " << communicator.rank() << ": " << status.message();
+    EXPECT_EQ(report.adaptivePasses, aloneReport.adaptivePasses) << "rank " << communicator.rank();
+    EXPECT_EQ(out.mesh.triangles, alone.mesh.triangles) << "rank " << communicator.rank();
+  });
+}

@@ -270,11 +270,12 @@ REMESH_KEYS = ("level", "vertices", "triangles", "hausdorff_distance", "hausdorf
                "centroid_flips", "repaired_vertices", "min_angle_degrees", "mean_shape_quality", "seconds")
 
 
-def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0):
+def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0, rerun=False):
     """The remesh stage of a run: `names` (in command-line order) remeshed
     together at `level` (the maximum level with an `adaptive` tolerance)
     with one connectivity; their report figures, their NAME.remesh.vtp,
-    collection.vtm and remesh_connectivity.vtp."""
+    collection.vtm and remesh_connectivity.vtp. Unless `rerun` (a crash
+    made them run again), the collection's stages ran once, together."""
     import numpy
     from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -304,6 +305,8 @@ def check_remeshed(out, report, stdout, names, level, landmarks=21, adaptive=0.0
     check_contains(stdout, "remeshing %d models at %s" % (len(names), label), "progress")
     check_contains(stdout, "remesh: %s, %d vertices, %d triangles per model" % (summary, vertices, triangles), "summary")
     check_contains(stdout, "Hausdorff/diag %", "summary header")
+    check(rerun or "running them again" not in stdout,
+          "the collection's stages ran twice (their shared child crashed)")
 
     connectivity = read_vtp(os.path.join(out, "remesh_connectivity.vtp"))
     check_equal((connectivity.GetNumberOfPoints(), connectivity.GetNumberOfCells()), (vertices, triangles),
@@ -1215,6 +1218,9 @@ def case_crash_isolation(tmp):
         environment={"CMP_TEST_CRASH": "remesh:collection:SIGSEGV"})
     check(report is not None, "no report.json after the remesh crashed (stderr: %s)" % stderr)
     check_equal(status, 1, "exit status with a crashed remesh (stderr: %s)" % stderr)
+    check_contains(stdout, "the collection's stages crashed while running the collection's stages: the process "
+                   "doing it was killed by SIGSEGV", "the shared child's crash")
+    check_contains(stdout, "running them again, each in a process of its own", "the stages run one by one")
     crashed = "crashed while remeshing the collection: the process doing it was killed by SIGSEGV"
     check_contains(report["remesh"].get("error", ""), crashed, "remesh error")
     for name in ("381", "384"):
@@ -1234,7 +1240,7 @@ def case_crash_isolation(tmp):
                    "crashed while drawing the pictures: the process doing it was killed by SIGSEGV",
                    "pictures error")
     check_equal(report["failed"], [], "failed models after a crashed PCA")
-    check_remeshed(out, report, stdout, ["381", "384"], 1)
+    check_remeshed(out, report, stdout, ["381", "384"], 1, rerun=True)
 
 
 def case_model_timeout(tmp):

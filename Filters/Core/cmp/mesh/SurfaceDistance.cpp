@@ -248,7 +248,7 @@ OneSided oneSidedDistance(const TriangleMesh& from, const TriangleMesh& to, int 
 } // namespace
 
 ClosestPointQuery::ClosestPointQuery(const TriangleMesh& mesh)
-  : mesh_(&mesh)
+  : triangles_(mesh.triangles)
 {
   const int n = mesh.triangleCount();
   if (n == 0)
@@ -370,7 +370,7 @@ ClosestPointQuery::Result ClosestPointQuery::closest(const Vec3& p) const
       stack[size++] = nearer;
   }
   if (best.at.triangle >= 0)
-    best.at.vertex = mesh_->triangles[best.at.triangle];
+    best.at.vertex = triangles_[best.at.triangle];
   best.distance = std::sqrt(bestSquared);
   return best;
 }

@@ -33,7 +33,8 @@ public:
     double distance = 0.0;     ///< Its distance to the query point.
   };
 
-  /// \brief Builds the tree (O(n log n)); the mesh must outlive the query.
+  /// \brief Builds the tree (O(n log n)) over copies of the mesh's
+  ///        corners and triangles, so the mesh need not outlive the query.
   explicit ClosestPointQuery(const TriangleMesh& mesh);
 
   /// \brief The closest point to `p` (exact point-triangle distance, branch and bound).
@@ -57,7 +58,7 @@ private:
   /// \brief Replaces `best` by a closer point of a triangle of the leaf `node`.
   void testLeaf(const Node& node, const Vec3& p, Result& best, double& bestSquared) const;
 
-  const TriangleMesh* mesh_; ///< The mesh queried (for the corners of a result's triangle).
+  std::vector<Triangle> triangles_; ///< The mesh's triangles (a result's corners), so the query keeps no reference.
   std::vector<Node> nodes_;
   std::vector<int> order_; ///< Triangle ids, grouped by leaf.
   /// \brief Corners of `order_[i]`, copied next to each other so a leaf's

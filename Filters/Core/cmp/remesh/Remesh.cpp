@@ -149,12 +149,7 @@ void addRefineMarks(
     if (!located)
       continue;
     mark.at = (corner[0] + corner[1] + corner[2]) / 3.0;
-    // Its share of the base triangle ((c1, c2) area 1/2) is 4^-level, or
-    // half that for a bisected leaf's half.
-    const double share = std::abs(cross2(corner[1] - corner[0], corner[2] - corner[0]));
-    if (!(share > 0.0))
-      continue;
-    mark.level = static_cast<int>(std::floor(std::log(1.0 / share) / std::log(4.0) + 1e-6));
+    mark.level = mesh.levelOfTriangle[t]; // a bisected leaf's halves keep its level
     marks.push_back(mark);
   }
 }
@@ -172,16 +167,27 @@ bool holds(const std::array<Vec2, 3>& corners, const Vec2& p)
 
 /// `flatness`, and a split of every node down to a mark's level that holds
 /// the mark.
-SplitRule refinedSplitRule(SplitRule flatness, std::vector<RefineMark> marks)
+SplitRule refinedSplitRule(SplitRule flatness, const std::vector<RefineMark>& marks)
 {
-  return [flatness = std::move(flatness), marks = std::move(marks)](
+  std::vector<std::vector<RefineMark>> byPatch; // the marks of each base triangle
+  for (const RefineMark& mark : marks)
+  {
+    if (mark.patch >= static_cast<int>(byPatch.size()))
+      byPatch.resize(mark.patch + 1);
+    byPatch[mark.patch].push_back(mark);
+  }
+  return [flatness = std::move(flatness), byPatch = std::move(byPatch)](
            const std::array<SurfacePoint, 3>& corners, int level) {
-    std::array<Vec2, 3> at;
-    for (int k = 0; k < 3; ++k)
-      at[k] = Vec2(corners[k].weight[1], corners[k].weight[2]);
-    for (const RefineMark& mark : marks)
-      if (mark.patch == corners[0].triangle && level <= mark.level && holds(at, mark.at))
-        return true;
+    const int patch = corners[0].triangle;
+    if (patch >= 0 && patch < static_cast<int>(byPatch.size()))
+    {
+      std::array<Vec2, 3> at;
+      for (int k = 0; k < 3; ++k)
+        at[k] = Vec2(corners[k].weight[1], corners[k].weight[2]);
+      for (const RefineMark& mark : byPatch[patch])
+        if (level <= mark.level && holds(at, mark.at))
+          return true;
+    }
     return flatness(corners, level);
   };
 }
@@ -327,7 +333,12 @@ Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localMod
   // farther from it than the tolerance, the connectivity is made again with
   // the triangles there split once more.
   const bool adaptive = options.adaptiveTolerance > 0.0;
-  const bool checked = adaptive && options.computeDistance;
+  // Over several processes the passes need sample relaxation, which makes
+  // sure that every process has the same connectivity; the processes then
+  // agree on each placement before they share the far triangles.
+  const bool shared = communicator.size() > 1;
+  const bool checked =
+    adaptive && options.computeDistance && (!shared || options.sampleRelaxationIterations > 0);
   std::vector<RefineMark> marks;
   double lastProgress = 0.0;
   for (int pass = 1;; ++pass)
@@ -352,10 +363,14 @@ Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localMod
     // The last pass that may be followed by another marks far triangles.
     const bool mayRefine = checked && pass < kAdaptivePasses;
     std::vector<std::vector<char>> farOnModels;
-    if (Status s = placeCollection(domain, localModels, surfaces, communicator, options, status, progress, attempt,
-          figures, mayRefine ? &farOnModels : nullptr);
-        !s.ok())
+    Status s = placeCollection(domain, localModels, surfaces, communicator, options, status, progress, attempt,
+      figures, mayRefine ? &farOnModels : nullptr);
+    if (checked && shared)
+      s = agreeOnStatus(s, communicator);
+    if (!s.ok())
     {
+      if (pass > 1)
+        break; // the last pass that succeeded stands
       if (report && figures.failedModel >= 0)
         *report = std::move(figures);
       return s;

@@ -163,7 +163,11 @@ struct RemeshReport
 /// relaxation the call is collective, and a process that fails before the
 /// relaxation (options, a missing model, adaptive refinement) makes every
 /// process fail with its message, so that none waits for the others.
-/// Without relaxation no process waits for another.
+/// Without relaxation no process waits for another. An adaptive remesh
+/// made again where it is far from a model (`adaptiveTolerance` with
+/// `computeDistance`) is made again only with relaxation when there are
+/// several processes; they then agree on each pass's placement, and a pass
+/// after the first that fails anywhere leaves the previous one standing.
 ///
 /// Fails (Status), naming the problem, on options out of range
 /// (`checkRemeshOptions()`), a model that is missing or not built, a
