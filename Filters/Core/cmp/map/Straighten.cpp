@@ -72,7 +72,15 @@ Status straighten(const TracedNet& traced, const BaseDomain& domain, Straightene
     StraightenedNet moved;
     PatchParameterization movedMap;
     status = freeCurves(straight, domain, parameterization, options.map, moved, movedMap, &r.freeCurves);
-    if (status.ok())
+    if (!status.ok())
+    {
+      // The straightened net is a valid layout: keep it, and say why the
+      // curves stay (a patch map that starts crushed cannot start the map).
+      r.freeCurves.applied = false;
+      r.freeCurves.reason = status.message();
+      status = Status();
+    }
+    else
     {
       straight = std::move(moved);
       parameterization = std::move(movedMap);

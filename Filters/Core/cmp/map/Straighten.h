@@ -87,9 +87,10 @@ struct StraightenReport
 ///
 /// Fails, naming the problem, on options out of range
 /// (`checkStraightenOptions()`) and where a part fails (`straightenNet()`:
-/// a net that does not belong to `domain`; `parameterizePatches()`;
-/// `freeCurves()`: sizes that disagree or a flipped starting map). Curves
-/// that cannot be freed, or are not because the surface has more than
+/// a net that does not belong to `domain`; `parameterizePatches()`). Curves
+/// that cannot be freed (`freeCurves()` fails, for example on a patch map
+/// that starts with a crushed triangle, or its cut does not give a layout),
+/// or are not because the surface has more than
 /// `options.freeCurvesMaximumTriangles`, are not a failure:
 /// `report->freeCurves.applied` is false, with the reason, and `out` is the
 /// straightened net. `out` and
