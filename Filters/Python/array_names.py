@@ -7,6 +7,7 @@ the PCA tables' columns in _COLUMN."""
 
 # Arrays that carry a model through the pipeline.
 FEATURE_ID_ARRAY = "FeatureId"
+FEATURE_COUNT_ARRAY = "FeatureCount"
 FILE_TO_MESH_POINT_ARRAY = "FileToMeshPointId"
 SOURCE_FILE_ARRAY = "SourceFile"
 CORNER_T_COORDS_ARRAY = "CornerTCoords"

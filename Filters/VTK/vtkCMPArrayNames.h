@@ -17,6 +17,10 @@ namespace cmp::bridge
 
 /// \brief Point array that marks landmark vertices (-1 or 0..F-1).
 constexpr const char* kFeatureIdArray = "FeatureId";
+/// \brief One-value field int array: how many features the surface's
+///        landmark file has (F), so that `FeatureId` can leave some out,
+///        even the last ones (features not placed on this model).
+constexpr const char* kFeatureCountArray = "FeatureCount";
 /// \brief Field array mapping a file's point ids to welded ids.
 constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
 /// \brief One-value field string array naming the file a surface was read

@@ -19,7 +19,21 @@ int vtkCMPBaseDomainBuilder::RequestData(
   cmp::LandmarkList landmarks;
   cmp::Status status = cmp::bridge::toCheckedSurface(input, mesh);
   if (status.ok())
-    status = cmp::bridge::readLandmarks(input, landmarks);
+  {
+    // A base domain is built from the landmarks a user placed, all of them.
+    status = cmp::bridge::readLandmarks(input, landmarks, true);
+    if (status.ok() && cmp::missingLandmarkCount(landmarks) > 0)
+    {
+      std::string features;
+      for (std::size_t f = 0; f < landmarks.size(); ++f)
+        if (landmarks[f] == cmp::kMissingLandmark)
+          features += (features.empty() ? "" : ", ") + std::to_string(f);
+      status = cmp::Status::error("this model misses landmark" +
+        std::string(cmp::missingLandmarkCount(landmarks) > 1 ? "s " : " ") + features +
+        ": a base domain is built from a model with every landmark (Missing Landmark Placer places missing "
+        "ones from the models that have them)");
+    }
+  }
   cmp::BaseDomain domain;
   cmp::BaseDomainBuilderReport report;
   if (status.ok())

@@ -21,7 +21,8 @@
 /// Paper §2 lets `L0` be given or "found automatically"; this decimation is
 /// ours (core `cmp::buildBaseDomain()`). Fails with `vtkErrorMacro` and no
 /// output when the surface or its landmarks fail the checks of Check
-/// Inputs, with fewer than 4 landmarks, or when the decimation gets stuck;
+/// Inputs, when the model misses landmarks (a `-1` in its file), with
+/// fewer than 4 landmarks, or when the decimation gets stuck;
 /// messages in Documentation/filters/BaseDomainBuilder.md.
 class CMPFILTERS_EXPORT vtkCMPBaseDomainBuilder : public vtkPolyDataAlgorithm
 {

@@ -28,7 +28,7 @@ int vtkCMPInputCheck::FillInputPortInformation(int port, vtkInformation* info)
 namespace
 {
 
-cmp::Status checkInputs(vtkPolyData* surface, vtkPolyData* baseDomain, bool requireLandmarks)
+cmp::Status checkInputs(vtkPolyData* surface, vtkPolyData* baseDomain, bool requireLandmarks, bool allowMissing)
 {
   cmp::TriangleMesh mesh;
   if (cmp::Status s = cmp::bridge::toCheckedSurface(surface, mesh); !s.ok())
@@ -37,7 +37,8 @@ cmp::Status checkInputs(vtkPolyData* surface, vtkPolyData* baseDomain, bool requ
   cmp::LandmarkList landmarks;
   if (hasLandmarks || requireLandmarks || baseDomain)
   {
-    if (cmp::Status s = cmp::bridge::readLandmarks(surface, landmarks); !s.ok())
+    // Against a base domain every feature must be there.
+    if (cmp::Status s = cmp::bridge::readLandmarks(surface, landmarks, allowMissing && !baseDomain); !s.ok())
       return s;
   }
   if (baseDomain)
@@ -55,7 +56,8 @@ int vtkCMPInputCheck::RequestData(vtkInformation*, vtkInformationVector** inputV
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* baseDomain = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  const cmp::Status status = checkInputs(surface, baseDomain, this->RequireLandmarks);
+  const cmp::Status status =
+    checkInputs(surface, baseDomain, this->RequireLandmarks, this->AllowMissingLandmarks);
   this->LastError = status.message();
   if (!status.ok())
   {
@@ -71,4 +73,5 @@ void vtkCMPInputCheck::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RequireLandmarks: " << this->RequireLandmarks << "\n";
+  os << indent << "AllowMissingLandmarks: " << this->AllowMissingLandmarks << "\n";
 }

@@ -13,7 +13,7 @@
 /// consistently oriented, connected genus-0 triangle surface without NaN
 /// coordinates or degenerate triangles. If it has a `FeatureId` array (or
 /// `RequireLandmarks` is on) the landmarks must be valid: -1 or 0..F-1, each
-/// feature exactly once.
+/// feature exactly once (at most once with `AllowMissingLandmarks`).
 /// Port 1 (optional): a base domain `L0`, which must be a closed, oriented
 /// genus-0 triangulation whose `FeatureId`s are 0..F-1 with F equal to the
 /// surface's landmark count.
@@ -37,6 +37,16 @@ public:
   /// \brief Fail if the surface has no `FeatureId` array (default off).
   vtkBooleanMacro(RequireLandmarks, bool);
 
+  /// \brief Accept features that are on no vertex (missing on this model,
+  ///        up to the field array `FeatureCount`), for Missing Landmark
+  ///        Placer to place (default off: every feature must be there).
+  ///        Against a base domain every feature must be there regardless.
+  vtkSetMacro(AllowMissingLandmarks, bool);
+  /// \brief Accept features missing on this model.
+  vtkGetMacro(AllowMissingLandmarks, bool);
+  /// \brief Accept features missing on this model.
+  vtkBooleanMacro(AllowMissingLandmarks, bool);
+
   /// \brief Connects the optional base domain to port 1.
   void SetBaseDomainConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
 
@@ -54,5 +64,6 @@ private:
   void operator=(const vtkCMPInputCheck&) = delete;
 
   bool RequireLandmarks = false;
+  bool AllowMissingLandmarks = false;
   std::string LastError;
 };

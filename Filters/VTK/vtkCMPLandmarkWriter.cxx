@@ -44,7 +44,10 @@ void vtkCMPLandmarkWriter::WriteData()
     values[v] = static_cast<int>(featureIds->GetComponent(v, 0));
   const std::vector<int> fileToMeshPoint = cmp::bridge::fileToMeshPointMap(surface);
   cmp::LandmarkList landmarks;
-  cmp::Status status = cmp::landmarksFromFeatureIds(values, landmarks);
+  // A feature missing on this model (none of its vertices carries it) is
+  // written as -1.
+  cmp::Status status =
+    cmp::landmarksFromFeatureIds(values, landmarks, cmp::bridge::featureCountOf(surface), true);
   if (status.ok())
     status = cmp::writeLandmarkFile(this->FileName, landmarks, mesh, fileToMeshPoint);
   if (!status.ok())

@@ -15,10 +15,12 @@
 ///
 /// Ids refer to the points of the surface's file: when the surface reader
 /// welded points, its field array `FileToMeshPointId` maps them and the
-/// file gets each vertex's first file point. Errors are reported with
-/// `vtkErrorMacro`, before anything is written: no `FeatureId`, a feature
-/// missing or on two vertices, a cell that is not a triangle, no file name;
-/// and an unwritable file.
+/// file gets each vertex's first file point. A feature on no vertex (below
+/// the field array `FeatureCount`, when there is one) could not be placed
+/// on this model and is written as missing: `-1`, `lk -1` or
+/// `nan,nan,nan`. Errors are reported with `vtkErrorMacro`, before
+/// anything is written: no `FeatureId`, a feature on two vertices, a cell
+/// that is not a triangle, no file name; and an unwritable file.
 class CMPFILTERS_EXPORT vtkCMPLandmarkWriter : public vtkWriter
 {
 public:

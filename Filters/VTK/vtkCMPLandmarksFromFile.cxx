@@ -33,7 +33,7 @@ int vtkCMPLandmarksFromFile::RequestData(
   cmp::LandmarkList landmarks;
   cmp::Status status = cmp::readLandmarkFile(this->LandmarkFile, mesh, fileToMeshPoint, landmarks);
   if (status.ok())
-    status = cmp::validateLandmarks(landmarks, mesh.vertexCount(), this->ExpectedLandmarkCount);
+    status = cmp::validateLandmarks(landmarks, mesh.vertexCount(), this->ExpectedLandmarkCount, true);
   if (!status.ok())
   {
     vtkErrorMacro(<< model << status.message());

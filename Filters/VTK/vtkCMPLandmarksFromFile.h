@@ -14,7 +14,11 @@
 /// Ids in the file index the points of the mesh file; if the reader welded
 /// points, its `FileToMeshPointId` field array maps them. CSV positions are
 /// snapped to the nearest vertex. The landmarks are the paper's F feature
-/// points (§2, "Basic Setup"; core `cmp::readLandmarkFile()`).
+/// points (§2, "Basic Setup"; core `cmp::readLandmarkFile()`). A feature
+/// the file marks missing (`-1`, or `nan,nan,nan` in a `.csv`) is on no
+/// vertex; field array `FeatureCount` says how many features the file has,
+/// and Missing Landmark Placer places the missing ones from the other
+/// models of a collection.
 /// Duplicates, out-of-range ids, malformed lines, positions that do not
 /// match the surface and a count different from `ExpectedLandmarkCount`
 /// (when >= 0) are reported with `vtkErrorMacro` and produce no output

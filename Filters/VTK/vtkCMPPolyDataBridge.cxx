@@ -1,5 +1,7 @@
 #include "vtkCMPPolyDataBridge.h"
 
+#include <cmath>
+
 #include <cmp/mesh/SurfaceCheck.h>
 
 #include <vtkCellArray.h>
@@ -97,12 +99,21 @@ Status readIntegerPointArray(vtkDataSet* input, const char* name, std::vector<in
 
 } // namespace
 
-Status readLandmarks(vtkPolyData* input, LandmarkList& landmarks)
+Status readLandmarks(vtkPolyData* input, LandmarkList& landmarks, bool allowMissing)
 {
   std::vector<int> featureIds;
   if (Status s = readIntegerPointArray(input, kFeatureIdArray, featureIds); !s.ok())
     return s;
-  return landmarksFromFeatureIds(featureIds, landmarks);
+  return landmarksFromFeatureIds(featureIds, landmarks, featureCountOf(input), allowMissing);
+}
+
+int featureCountOf(vtkDataObject* data)
+{
+  vtkDataArray* count = data ? data->GetFieldData()->GetArray(kFeatureCountArray) : nullptr;
+  if (!count || count->GetNumberOfTuples() != 1 || count->GetNumberOfComponents() != 1)
+    return -1;
+  const double value = count->GetTuple1(0);
+  return std::isfinite(value) && value >= 0 && value <= 1e9 ? static_cast<int>(value) : -1;
 }
 
 Status readPatchIds(vtkPolyData* input, std::vector<int>& patchIds)
@@ -219,6 +230,7 @@ void setFeatureIds(vtkPolyData* surface, const LandmarkList& landmarks)
 {
   surface->GetPointData()->AddArray(
     intArray(kFeatureIdArray, featureIdsOf(landmarks, static_cast<int>(surface->GetNumberOfPoints()))));
+  surface->GetFieldData()->AddArray(intArray(kFeatureCountArray, { static_cast<int>(landmarks.size()) }));
 }
 
 std::vector<int> fileToMeshPointMap(vtkPolyData* surface)

@@ -38,8 +38,14 @@ Status toTriangleMesh(vtkPolyData* input, TriangleMesh& mesh);
 ///        input with one call.
 Status toCheckedSurface(vtkPolyData* input, TriangleMesh& mesh);
 
-/// \brief Reads the `FeatureId` point array (any integer type) as landmarks.
-Status readLandmarks(vtkPolyData* input, LandmarkList& landmarks);
+/// \brief Reads the `FeatureId` point array (any integer type) as landmarks,
+///        as many as the field array `FeatureCount` says when present
+///        (`landmarksFromFeatureIds()`). A feature on no vertex fails,
+///        unless `allowMissing` (it is then `kMissingLandmark`).
+Status readLandmarks(vtkPolyData* input, LandmarkList& landmarks, bool allowMissing = false);
+
+/// \brief The field array `FeatureCount` of `data`, or -1 without one.
+int featureCountOf(vtkDataObject* data);
 
 /// \brief Reads the `PatchId` cell array (any integer type, one value per
 ///        triangle), as Feature Net Tracer writes it.
@@ -78,7 +84,8 @@ vtkSmartPointer<ArrayType> valueArray(const char* name, const std::vector<Value>
 }
 
 /// \brief Adds (or replaces) the point array `FeatureId` of `surface`
-///        (int: -1, or the feature index at each landmark vertex).
+///        (int: -1, or the feature index at each landmark vertex; a missing
+///        feature is on no vertex) and the field array `FeatureCount`.
 void setFeatureIds(vtkPolyData* surface, const LandmarkList& landmarks);
 
 /// \brief The file-to-mesh point map the surface reader leaves in field

@@ -189,3 +189,51 @@ TEST(Landmarks, RealLandmarkFilesMatchTheirMeshes)
       .ok());
   EXPECT_EQ(landmarks.size(), 21u);
 }
+
+// Issue 27: a feature that could not be placed on a model is -1 in every
+// format, and reads back as kMissingLandmark.
+TEST(Landmarks, MissingFeaturesReadAndWriteInEveryFormat)
+{
+  const TriangleMesh mesh = test::sphere(2);
+  LandmarkList landmarks;
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("m.vts", "0 1 0 0\n-1 9 9 9 anything\n4 0 0 1\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 0, kMissingLandmark, 4 }));
+  ASSERT_TRUE(readLandmarkFile(writeTempFile("m.pinned", "lk -1\nlk 4\n-1\n"), mesh, {}, landmarks).ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ kMissingLandmark, 4, kMissingLandmark }));
+  // nan,nan,nan and an empty row are missing; empty rows at the end are not.
+  // A comment line is no row.
+  ASSERT_TRUE(readLandmarkFile(
+    writeTempFile("m.csv", "x,y,z\n1,0,0\n# the tail\nnan,nan,nan\n\n0,0,1\n\n\n"), mesh, {}, landmarks)
+                .ok());
+  EXPECT_EQ(landmarks, (LandmarkList{ 0, kMissingLandmark, kMissingLandmark, 4 }));
+  EXPECT_EQ(missingLandmarkCount(landmarks), 2);
+  expectError(readLandmarkFile(writeTempFile("n.csv", "1,0,0\nnan,0,1\n"), mesh, {}, landmarks),
+    "n.csv:2: landmark 1: expected three finite coordinates, or nan,nan,nan");
+  expectError(readLandmarkFile(writeTempFile("all.pinned", "lk -1\n-1\n"), mesh, {}, landmarks),
+    "all.pinned: every landmark is missing");
+  expectError(readLandmarkFile(writeTempFile("neg.pinned", "lk 4\nlk -2\n"), mesh, {}, landmarks),
+    "neg.pinned:2: landmark vertex id -2 is out of range");
+
+  const LandmarkList withMissing = { 4, kMissingLandmark, 0 };
+  for (const char* name : { "missing.vts", "missing.pinned", "missing.csv" })
+  {
+    const std::string path = test::tempPath(name);
+    ASSERT_TRUE(writeLandmarkFile(path, withMissing, mesh, {}).ok()) << name;
+    LandmarkList read;
+    const Status status = readLandmarkFile(path, mesh, {}, read);
+    ASSERT_TRUE(status.ok()) << name << ": " << status.message();
+    EXPECT_EQ(read, withMissing) << name;
+  }
+
+  // Stages that need every feature say that one is missing.
+  expectError(validateLandmarks(withMissing, mesh.vertexCount()), "landmark 1 is missing");
+  EXPECT_TRUE(validateLandmarks(withMissing, mesh.vertexCount(), 3, true).ok());
+  // FeatureId holds a missing feature as no vertex; the feature count says
+  // how many there are when the last ones are missing.
+  const std::vector<int> ids = featureIdsOf({ 4, kMissingLandmark, 0, kMissingLandmark }, mesh.vertexCount());
+  LandmarkList back;
+  expectError(landmarksFromFeatureIds(ids, back), "missing landmark: feature 1 is on no vertex");
+  ASSERT_TRUE(landmarksFromFeatureIds(ids, back, 4, true).ok());
+  EXPECT_EQ(back, (LandmarkList{ 4, kMissingLandmark, 0, kMissingLandmark }));
+  expectError(landmarksFromFeatureIds(ids, back, 2, true), "FeatureId 2 is not below the feature count, 2");
+}

@@ -58,13 +58,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   }
   const int vertices = data.mesh.vertexCount();
   std::set<int> seen;
+  // A feature may be missing (-1), not every one.
   for (int vertex : landmarks)
-    if (vertex < 0 || vertex >= vertices || !seen.insert(vertex).second)
+    if (vertex != cmp::kMissingLandmark && (vertex < 0 || vertex >= vertices || !seen.insert(vertex).second))
       cmp_fuzz::fail("accepted a landmark out of range or repeated");
-  if (!cmp::validateLandmarks(landmarks, vertices).ok())
+  if (seen.empty())
+    cmp_fuzz::fail("accepted a file whose every landmark is missing");
+  if (!cmp::validateLandmarks(landmarks, vertices, -1, true).ok())
     cmp_fuzz::fail("accepted landmarks that validateLandmarks refuses");
   cmp::LandmarkList back;
-  if (!cmp::landmarksFromFeatureIds(cmp::featureIdsOf(landmarks, vertices), back).ok() || back != landmarks)
+  const int count = static_cast<int>(landmarks.size());
+  if (!cmp::landmarksFromFeatureIds(cmp::featureIdsOf(landmarks, vertices), back, count, true).ok() ||
+    back != landmarks)
     cmp_fuzz::fail("landmarks changed through FeatureId");
   std::string text;
   if (!cmp::formatLandmarkFile(path, landmarks, data.mesh, data.fileToMeshPoint, text).ok())

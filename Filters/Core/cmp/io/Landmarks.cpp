@@ -2,6 +2,7 @@
 
 #include <cmp/io/TextParsing.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -45,6 +46,11 @@ bool parseId(const std::string& line, long& id, const char** rest)
 
 Status mapFileId(long id, const std::vector<int>& fileToMeshPoint, int vertexCount, const std::string& at, int& vertex)
 {
+  if (id == kMissingLandmark)
+  {
+    vertex = kMissingLandmark;
+    return {};
+  }
   const long fileCount = fileToMeshPoint.empty() ? vertexCount : static_cast<long>(fileToMeshPoint.size());
   if (id < 0 || id >= fileCount)
     return Status::error(at + "landmark vertex id " + std::to_string(id) + " is out of range (the mesh has " +
@@ -74,6 +80,13 @@ Status parseIdList(const std::string& path, const std::string& text, const Trian
     int vertex = -1;
     if (Status s = mapFileId(id, fileToMeshPoint, mesh.vertexCount(), at, vertex); !s.ok())
       return s;
+    // A feature not placed on this model: `-1`, the rest of a .vts line
+    // ignored (its position means nothing).
+    if (vertex == kMissingLandmark)
+    {
+      landmarks.push_back(kMissingLandmark);
+      continue;
+    }
     if (withPositions)
     {
       double xyz[3];
@@ -117,8 +130,21 @@ Status parseCsvPositions(const std::string& path, const std::string& text, const
   LineReader lines(text);
   std::string line;
   bool first = true;
-  while (lines.next(line))
+  // Empty rows stand for features not placed on this model; those after the
+  // last landmark are only the end of the file.
+  int emptyRows = 0;
+  std::size_t start = 0; // where the line read next starts in `text`
+  while (lines.next(line, false))
   {
+    const std::size_t end = std::min(lines.offset(), text.size());
+    const bool comment = std::find(text.begin() + start, text.begin() + end, '#') != text.begin() + end;
+    start = lines.offset();
+    if (line.find_first_not_of(" \t\r,") == std::string::npos)
+    {
+      if (!first && !comment)
+        ++emptyRows;
+      continue;
+    }
     double xyz[3];
     std::string extra;
     const int count = parseNumbers(line, xyz, 3, ',', &extra);
@@ -134,6 +160,17 @@ Status parseCsvPositions(const std::string& path, const std::string& text, const
     if (!extra.empty())
       return Status::error(fileLine(path, lines.number()) + "expected 'x,y,z', found '" + extra + "' after them");
     first = false;
+    landmarks.insert(landmarks.end(), emptyRows, kMissingLandmark);
+    emptyRows = 0;
+    const int nans = int(std::isnan(xyz[0])) + int(std::isnan(xyz[1])) + int(std::isnan(xyz[2]));
+    if (nans == 3)
+    {
+      landmarks.push_back(kMissingLandmark);
+      continue;
+    }
+    if (nans > 0 || !std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
+      return Status::error(fileLine(path, lines.number()) + "landmark " + std::to_string(landmarks.size()) +
+        ": expected three finite coordinates, or nan,nan,nan for a feature not placed on this model");
     double distance = 0.0;
     const Vec3 p(xyz[0], xyz[1], xyz[2]);
     const int vertex = nearestVertex(mesh, p, distance);
@@ -162,7 +199,9 @@ Status readLandmarkFile(const std::string& path, const TriangleMesh& mesh, const
     return status;
   if (landmarks.empty())
     return Status::error(path + ": no landmarks in the file");
-  status = validateLandmarks(landmarks, mesh.vertexCount());
+  if (missingLandmarkCount(landmarks) == static_cast<int>(landmarks.size()))
+    return Status::error(path + ": every landmark is missing (-1)");
+  status = validateLandmarks(landmarks, mesh.vertexCount(), -1, true);
   return status.ok() ? status : Status::error(path + ": " + status.message());
 }
 
@@ -172,7 +211,7 @@ Status formatLandmarkFile(const std::string& path, const LandmarkList& landmarks
   text.clear();
   if (landmarks.empty())
     return Status::error("no landmarks to write");
-  if (Status s = validateLandmarks(landmarks, mesh.vertexCount()); !s.ok())
+  if (Status s = validateLandmarks(landmarks, mesh.vertexCount(), -1, true); !s.ok())
     return s;
   // The reader maps file ids to mesh vertices; write the first file id of
   // each landmark vertex (identity when no map is given).
@@ -191,6 +230,11 @@ Status formatLandmarkFile(const std::string& path, const LandmarkList& landmarks
   for (int f = 0; f < static_cast<int>(landmarks.size()); ++f)
   {
     const int v = landmarks[f];
+    if (v == kMissingLandmark)
+    {
+      out << (ext == "csv" ? "nan,nan,nan\n" : ext == "vts" ? "-1\n" : "lk -1\n");
+      continue;
+    }
     if (fileIdOf[v] < 0)
       return Status::error("landmark " + std::to_string(f) + " is on vertex " + std::to_string(v) +
         ", which no point of the mesh file maps to");
@@ -218,7 +262,12 @@ Status writeLandmarkFile(const std::string& path, const LandmarkList& landmarks,
   return {};
 }
 
-Status validateLandmarks(const LandmarkList& landmarks, int vertexCount, int expectedCount)
+int missingLandmarkCount(const LandmarkList& landmarks)
+{
+  return static_cast<int>(std::count(landmarks.begin(), landmarks.end(), kMissingLandmark));
+}
+
+Status validateLandmarks(const LandmarkList& landmarks, int vertexCount, int expectedCount, bool allowMissing)
 {
   if (expectedCount >= 0 && static_cast<int>(landmarks.size()) != expectedCount)
     return Status::error(std::to_string(landmarks.size()) + " landmarks but " + std::to_string(expectedCount) +
@@ -227,6 +276,14 @@ Status validateLandmarks(const LandmarkList& landmarks, int vertexCount, int exp
   for (int f = 0; f < static_cast<int>(landmarks.size()); ++f)
   {
     const int v = landmarks[f];
+    if (v == kMissingLandmark)
+    {
+      if (allowMissing)
+        continue;
+      return Status::error("landmark " + std::to_string(f) +
+        " is missing (-1: not placed on this model); Missing Landmark Placer, or consistent-remesh, places it "
+        "from the models that have it");
+    }
     if (v < 0 || v >= vertexCount)
       return Status::error("landmark " + std::to_string(f) + " is vertex " + std::to_string(v) +
         ", which is out of range (the mesh has " + std::to_string(vertexCount) + " vertices)");
@@ -242,11 +299,13 @@ std::vector<int> featureIdsOf(const LandmarkList& landmarks, int vertexCount)
 {
   std::vector<int> ids(vertexCount, -1);
   for (int f = 0; f < static_cast<int>(landmarks.size()); ++f)
-    ids[landmarks[f]] = f;
+    if (landmarks[f] != kMissingLandmark)
+      ids[landmarks[f]] = f;
   return ids;
 }
 
-Status landmarksFromFeatureIds(const std::vector<int>& featureIds, LandmarkList& landmarks)
+Status landmarksFromFeatureIds(
+  const std::vector<int>& featureIds, LandmarkList& landmarks, int featureCount, bool allowMissing)
 {
   landmarks.clear();
   const int n = static_cast<int>(featureIds.size());
@@ -262,7 +321,11 @@ Status landmarksFromFeatureIds(const std::vector<int>& featureIds, LandmarkList&
     return Status::error("no landmarks: every FeatureId is -1");
   if (maxId >= n)
     return Status::error("FeatureId " + std::to_string(maxId) + " is larger than the number of vertices");
-  landmarks.assign(maxId + 1, -1);
+  if (featureCount >= 0 && maxId >= featureCount)
+    return Status::error("FeatureId " + std::to_string(maxId) + " is not below the feature count, " +
+      std::to_string(featureCount));
+  const int count = featureCount >= 0 ? featureCount : maxId + 1;
+  landmarks.assign(count, kMissingLandmark);
   for (int v = 0; v < n; ++v)
   {
     const int f = featureIds[v];
@@ -273,11 +336,12 @@ Status landmarksFromFeatureIds(const std::vector<int>& featureIds, LandmarkList&
         std::to_string(landmarks[f]) + " and " + std::to_string(v));
     landmarks[f] = v;
   }
-  for (int f = 0; f <= maxId; ++f)
+  for (int f = 0; f < count && !allowMissing; ++f)
   {
     if (landmarks[f] < 0)
       return Status::error("missing landmark: feature " + std::to_string(f) + " is on no vertex (features 0.." +
-        std::to_string(maxId) + " must all be present)");
+        std::to_string(count - 1) + " must all be present; Missing Landmark Placer places a feature from the "
+        "models that have it)");
   }
   return {};
 }

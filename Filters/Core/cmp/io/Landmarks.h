@@ -18,8 +18,17 @@ namespace cmp
 {
 
 /// \brief Landmark vertex of each feature: `vertexOfFeature[f]` is the mesh
-///        vertex that carries feature f.
+///        vertex that carries feature f, or `kMissingLandmark` for a
+///        feature that could not be placed on this model (beyond the
+///        paper, whose every model has every feature point).
 using LandmarkList = std::vector<int>;
+
+/// \brief The vertex id of a feature missing on a model, in a
+///        `LandmarkList` and in every landmark file format.
+constexpr int kMissingLandmark = -1;
+
+/// \brief How many features of `landmarks` are missing.
+int missingLandmarkCount(const LandmarkList& landmarks);
 
 /// \brief Reads a landmark file and returns mesh vertex ids in feature order.
 ///
@@ -30,6 +39,10 @@ using LandmarkList = std::vector<int>;
 ///   snapped to the nearest vertex;
 /// - anything else (`.pinned`, `.txt`, ...): `lk ID` or `ID` per line.
 ///
+/// A feature that could not be placed on this model is `kMissingLandmark`:
+/// a `.vts` line `-1` (the rest of the line ignored), `lk -1` or `-1`, a
+/// `.csv` row `nan,nan,nan` or an empty row before the last landmark.
+///
 /// Ids are 0-based indices into the file's own point list; `fileToMeshPoint`
 /// (from `MeshFileData`, may be empty for identity) maps them to the welded
 /// mesh. `#` starts a comment.
@@ -39,8 +52,9 @@ using LandmarkList = std::vector<int>;
 /// Fails (Status), naming the file and line, on a missing, unreadable or
 /// binary file, a malformed line or a field too many, an id out of range, a
 /// `.vts` position farther than 0.1% of the bounding-box diagonal from its
-/// vertex, a `.csv` position farther than 5% of it from every vertex, a
-/// file without landmarks, and two features on one vertex.
+/// vertex, a `.csv` position farther than 5% of it from every vertex or
+/// only partly `nan`, a file without landmarks or with every one missing,
+/// and two features on one vertex.
 Status readLandmarkFile(const std::string& path, const TriangleMesh& mesh, const std::vector<int>& fileToMeshPoint,
   LandmarkList& landmarks);
 
@@ -63,21 +77,30 @@ Status formatLandmarkFile(const std::string& path, const LandmarkList& landmarks
 Status writeLandmarkFile(const std::string& path, const LandmarkList& landmarks, const TriangleMesh& mesh,
   const std::vector<int>& fileToMeshPoint);
 
-/// \brief Checks that every landmark is a valid vertex, no vertex carries two
+/// \brief Checks that every landmark is a valid vertex (or, with
+///        `allowMissing`, `kMissingLandmark`), no vertex carries two
 ///        features, and (when `expectedCount >= 0`) that there are exactly
 ///        `expectedCount` of them. Fails (Status) on the first of these
-///        that does not hold, naming the landmark.
-Status validateLandmarks(const LandmarkList& landmarks, int vertexCount, int expectedCount = -1);
+///        that does not hold, naming the landmark; a missing one without
+///        `allowMissing` says that it is missing.
+Status validateLandmarks(
+  const LandmarkList& landmarks, int vertexCount, int expectedCount = -1, bool allowMissing = false);
 
-/// \brief The per-vertex `FeatureId` values for a landmark list.
-/// \pre `landmarks` pass `validateLandmarks(landmarks, vertexCount)`.
+/// \brief The per-vertex `FeatureId` values for a landmark list (a missing
+///        feature is on no vertex).
+/// \pre `landmarks` pass `validateLandmarks(landmarks, vertexCount, -1, true)`.
 std::vector<int> featureIdsOf(const LandmarkList& landmarks, int vertexCount);
 
 /// \brief Reads landmarks back from per-vertex `FeatureId` values, checking
 ///        that they are -1 or 0..F-1 and that each feature occurs exactly once.
-///        Fails (Status) on a value below -1 or not below the vertex
-///        count, on no landmark at all, and on a feature that is missing or
-///        on two vertices.
-Status landmarksFromFeatureIds(const std::vector<int>& featureIds, LandmarkList& landmarks);
+///        F is `featureCount` when given (>= 0; the field data
+///        `FeatureCount` of a surface whose last features may be missing),
+///        else the largest id plus one. Fails (Status) on a value below -1,
+///        not below the vertex count or not below `featureCount`, on no
+///        landmark at all, on a feature on two vertices, and, unless
+///        `allowMissing` (it is then `kMissingLandmark`), on a feature that
+///        is on no vertex.
+Status landmarksFromFeatureIds(
+  const std::vector<int>& featureIds, LandmarkList& landmarks, int featureCount = -1, bool allowMissing = false);
 
 } // namespace cmp
