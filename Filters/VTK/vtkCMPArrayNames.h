@@ -21,6 +21,15 @@ constexpr const char* kFeatureIdArray = "FeatureId";
 ///        landmark file has (F), so that `FeatureId` can leave some out,
 ///        even the last ones (features not placed on this model).
 constexpr const char* kFeatureCountArray = "FeatureCount";
+/// \brief Point array that marks the landmarks Missing Landmark Placer
+///        placed (-1 elsewhere, the feature at a placed vertex).
+constexpr const char* kPlacedFeatureIdArray = "PlacedFeatureId";
+/// \brief Field int array: the features Missing Landmark Placer placed on
+///        a surface.
+constexpr const char* kPlacedFeaturesArray = "PlacedFeatures";
+/// \brief Field double array: per placed feature, the median distance of
+///        the points the sources carry it to, over sqrt(area).
+constexpr const char* kPlacedFeatureSpreadArray = "PlacedFeatureSpread";
 /// \brief Field array mapping a file's point ids to welded ids.
 constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
 /// \brief One-value field string array naming the file a surface was read

@@ -1,0 +1,424 @@
+#include <cmp/remesh/MissingLandmarks.h>
+
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/mesh/SurfaceDistance.h>
+#include <cmp/remesh/Remesh.h>
+#include <cmp/remesh/SemiRegularRemesher.h>
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <thread>
+
+namespace cmp
+{
+namespace
+{
+
+/// The geometric median of `points` weighted by `w` (Weiszfeld's iteration
+/// from their weighted mean): one source whose map went astray moves it
+/// little.
+Vec3 geometricMedian(const std::vector<Vec3>& points, const std::vector<double>& w)
+{
+  Vec3 x = Vec3::Zero();
+  double total = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    x += w[i] * points[i];
+    total += w[i];
+  }
+  x /= total;
+  for (int iteration = 0; iteration < 50; ++iteration)
+  {
+    Vec3 sum = Vec3::Zero();
+    double weights = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      const Vec3& p = points[i];
+      const double d = (p - x).norm();
+      if (d < 1e-12)
+        return p;
+      sum += w[i] * p / d;
+      weights += w[i] / d;
+    }
+    const Vec3 next = sum / weights;
+    const bool settled = (next - x).norm() < 1e-9 * (1.0 + x.norm());
+    x = next;
+    if (settled)
+      break;
+  }
+  return x;
+}
+
+/// How alike two placements of one remesh are: the RMS distance between
+/// them after a similarity fit (both centred and scaled to unit RMS radius,
+/// then the best rotation; Umeyama's method), 0 for the same shape.
+double shapeDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+{
+  const Eigen::Index n = static_cast<Eigen::Index>(a.size());
+  Eigen::Matrix3Xd A(3, n), B(3, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+  {
+    A.col(i) = a[i];
+    B.col(i) = b[i];
+  }
+  A.colwise() -= A.rowwise().mean();
+  B.colwise() -= B.rowwise().mean();
+  const double sizeA = std::sqrt(A.squaredNorm() / n), sizeB = std::sqrt(B.squaredNorm() / n);
+  if (!(sizeA > 0.0) || !(sizeB > 0.0))
+    return 0.0;
+  A /= sizeA;
+  B /= sizeB;
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(B * A.transpose(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d reflect = Eigen::Matrix3d::Identity();
+  if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0)
+    reflect(2, 2) = -1.0;
+  const Eigen::Matrix3d rotation = svd.matrixU() * reflect * svd.matrixV().transpose();
+  return std::sqrt((rotation * A - B).squaredNorm() / n);
+}
+
+/// The vertex of `mesh` nearest to `p` that carries no feature
+/// (`taken[v]`): a corner of the triangle `near` (the triangle of the
+/// closest point) if one is free, else the nearest free vertex of all.
+int nearestFreeVertex(const TriangleMesh& mesh, int near, const Vec3& p, const std::vector<char>& taken)
+{
+  int best = -1;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  if (near >= 0)
+    for (int v : mesh.triangles[near])
+      if (!taken[v] && (mesh.points[v] - p).norm() < bestDistance)
+      {
+        best = v;
+        bestDistance = (mesh.points[v] - p).norm();
+      }
+  if (best >= 0)
+    return best;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (!taken[v] && (mesh.points[v] - p).norm() < bestDistance)
+    {
+      best = v;
+      bestDistance = (mesh.points[v] - p).norm();
+    }
+  return best;
+}
+
+/// Places the features `dropped` on the models of missing set `set`
+/// (`setOf[m] == set`): every model that has the other features is mapped
+/// over a base domain built from `source` without `dropped`, the
+/// collection remeshed, and each dropped feature carried from the models
+/// that have it.
+Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::vector<LandmarkList>& landmarks,
+  const std::vector<char>& dropped, const std::vector<int>& setOf, int set, int source,
+  const MissingLandmarkOptions& options, MissingLandmarkReport& out, const std::function<void(double)>& progress)
+{
+  const int modelCount = static_cast<int>(surfaces.size());
+  const int featureCount = static_cast<int>(dropped.size());
+  std::vector<int> keptFeatures;
+  for (int f = 0; f < featureCount; ++f)
+    if (!dropped[f])
+      keptFeatures.push_back(f);
+  // Targets, and the models that have every kept feature (the targets and
+  // the sources).
+  std::vector<int> members;
+  for (int m = 0; m < modelCount; ++m)
+  {
+    bool hasKept = true;
+    for (int f : keptFeatures)
+      hasKept = hasKept && landmarks[m][f] != kMissingLandmark;
+    if (hasKept)
+      members.push_back(m);
+  }
+  auto reduced = [&](int m) {
+    LandmarkList list;
+    for (int f : keptFeatures)
+      list.push_back(landmarks[m][f]);
+    return list;
+  };
+  BaseDomain domain;
+  if (Status s = buildBaseDomain(*surfaces[source], reduced(source), domain); !s.ok())
+    return Status::error("the base domain without the missing features: " + s.message());
+
+  struct Mapped
+  {
+    TracedNet traced;
+    StraightenedNet straight;
+    PatchParameterization map;
+    ParameterizedSurface surface;
+  };
+  // Each model is mapped on its own: a thread takes the next one not yet
+  // taken, and the calling thread (the only one to report progress) works
+  // too.
+  const int count = static_cast<int>(members.size());
+  std::vector<std::unique_ptr<Mapped>> mapped(members.size());
+  std::vector<Status> statuses(members.size());
+  std::atomic<int> next{ 0 };
+  std::atomic<int> done{ 0 };
+  const auto work = [&](bool reportProgress) {
+    for (int i = next++; i < count; i = next++)
+    {
+      const int m = members[i];
+      auto one = std::make_unique<Mapped>();
+      try
+      {
+        statuses[i] = traceFeatureNet(*surfaces[m], reduced(m), domain, one->traced);
+        if (statuses[i].ok())
+          statuses[i] = straighten(one->traced, domain, one->straight, one->map, options.straighten);
+        if (statuses[i].ok())
+          statuses[i] = one->surface.build(one->straight.net, domain, one->map);
+      }
+      catch (const std::exception& error)
+      {
+        statuses[i] = Status::error(std::string("mapping failed: ") + error.what());
+      }
+      if (statuses[i].ok())
+        mapped[i] = std::move(one);
+      const int finished = ++done;
+      if (reportProgress)
+        progress(0.9 * finished / count);
+    }
+  };
+  const int threadCount = std::clamp(
+    options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
+    std::max(1, count));
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threadCount; ++t)
+    helpers.emplace_back(work, false);
+  work(true);
+  for (std::thread& helper : helpers)
+    helper.join();
+  std::vector<RemeshModel> remeshModels;
+  std::vector<int> remeshed; // the model of each one remeshed
+  for (int i = 0; i < count; ++i)
+  {
+    const int m = members[i];
+    if (!statuses[i].ok())
+    {
+      if (setOf[m] == set || out.modelErrors[m].empty())
+        out.modelErrors[m] = statuses[i].message();
+      continue;
+    }
+    remeshModels.push_back({ surfaces[m], &mapped[i]->surface });
+    remeshed.push_back(m);
+  }
+  bool anyTarget = false;
+  for (int m : remeshed)
+    anyTarget = anyTarget || setOf[m] == set;
+  if (!anyTarget)
+    return {}; // each target's error says why
+
+  RemeshOptions remeshOptions;
+  remeshOptions.level = options.level;
+  remeshOptions.sampleRelaxationIterations = options.sampleRelaxationIterations;
+  remeshOptions.computeDistance = false;
+  CollectionRemesh collection;
+  if (Status s = remesh(domain, remeshModels, collection, remeshOptions); !s.ok())
+    return Status::error("the remesh without the missing features: " + s.message());
+  progress(0.95);
+
+  // Where each source's landmark lies on its remesh.
+  const std::vector<Triangle>& triangles = collection.mesh.triangles;
+  std::vector<std::unique_ptr<ClosestPointQuery>> onRemesh(remeshed.size());
+  for (std::size_t i = 0; i < remeshed.size(); ++i)
+  {
+    TriangleMesh placedRemesh;
+    placedRemesh.points = collection.models[i].positions;
+    placedRemesh.triangles = triangles;
+    onRemesh[i] = std::make_unique<ClosestPointQuery>(placedRemesh);
+  }
+  for (std::size_t target = 0; target < remeshed.size(); ++target)
+  {
+    const int m = remeshed[target];
+    if (setOf[m] != set)
+      continue;
+    // The sources whose remesh is most like the target's weigh most: their
+    // maps are the likeliest to agree with the target's.
+    std::vector<double> unlikeness(remeshed.size(), 0.0);
+    if (options.similarityWidth > 0.0)
+      for (std::size_t i = 0; i < remeshed.size(); ++i)
+        unlikeness[i] = shapeDistance(collection.models[i].positions, collection.models[target].positions) /
+          options.similarityWidth;
+    const TriangleMesh& surface = *surfaces[m];
+    const ClosestPointQuery onSurface(surface);
+    const double scale = std::sqrt(std::max(surfaceArea(surface), 1e-300));
+    std::vector<char> taken(surface.vertexCount(), 0);
+    for (int v : landmarks[m])
+      if (v != kMissingLandmark)
+        taken[v] = 1;
+    for (int f = 0; f < featureCount; ++f)
+    {
+      if (!dropped[f])
+        continue;
+      std::vector<Vec3> carried;
+      std::vector<double> weight;
+      for (std::size_t i = 0; i < remeshed.size(); ++i)
+      {
+        const int c = remeshed[i];
+        if (landmarks[c][f] == kMissingLandmark)
+          continue;
+        const ClosestPointQuery::Result at = onRemesh[i]->closest(surfaces[c]->points[landmarks[c][f]]);
+        // The query's vertices are its triangle's corners: the same corners
+        // and weights on the target's remesh.
+        const std::vector<Vec3>& positions = collection.models[target].positions;
+        Vec3 p = Vec3::Zero();
+        for (int k = 0; k < 3; ++k)
+          if (at.at.vertex[k] >= 0)
+            p += at.at.weight[k] * positions[at.at.vertex[k]];
+        if (at.at.triangle >= 0)
+        {
+          carried.push_back(p);
+          weight.push_back(unlikeness[i]);
+        }
+      }
+      if (carried.empty())
+        continue; // every model that has it failed: it stays missing
+      // exp(-r^2) relative to the likest source's, which weighs 1.
+      const double likest = *std::min_element(weight.begin(), weight.end());
+      for (double& w : weight)
+        w = std::exp(likest * likest - w * w);
+      const ClosestPointQuery::Result onto = onSurface.closest(geometricMedian(carried, weight));
+      const int vertex = nearestFreeVertex(surface, onto.at.triangle, onto.point, taken);
+      if (vertex < 0)
+        continue;
+      taken[vertex] = 1;
+      std::vector<double> distances;
+      for (const Vec3& p : carried)
+        distances.push_back((p - surface.points[vertex]).norm() / scale);
+      std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+      PlacedLandmark placed;
+      placed.model = m;
+      placed.feature = f;
+      placed.vertex = vertex;
+      placed.position = surface.points[vertex];
+      placed.sources = static_cast<int>(carried.size());
+      placed.spread = distances[distances.size() / 2];
+      out.placed.push_back(placed);
+    }
+  }
+  return {};
+}
+
+} // namespace
+
+Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  const MissingLandmarkOptions& options, MissingLandmarkReport* report)
+{
+  const auto start = std::chrono::steady_clock::now();
+  MissingLandmarkReport local;
+  MissingLandmarkReport& out = report ? *report : local;
+  out = MissingLandmarkReport();
+  const int modelCount = static_cast<int>(surfaces.size());
+  out.modelErrors.assign(modelCount, std::string());
+  if (static_cast<int>(landmarks.size()) != modelCount)
+    return Status::error(std::to_string(surfaces.size()) + " surfaces but " + std::to_string(landmarks.size()) +
+      " landmark lists");
+  if (options.level < 1 || options.level > kMaximumRemeshLevel)
+    return Status::error("level " + std::to_string(options.level) + " is out of range (1 to " +
+      std::to_string(kMaximumRemeshLevel) + ")");
+  if (options.sampleRelaxationIterations < 0)
+    return Status::error("sample relaxation rounds must not be negative");
+  if (!std::isfinite(options.similarityWidth) || options.similarityWidth < 0.0)
+    return Status::error("the similarity width must be 0 or positive");
+  if (modelCount == 0)
+    return {};
+  const int featureCount = static_cast<int>(landmarks[0].size());
+  for (int m = 0; m < modelCount; ++m)
+  {
+    if (!surfaces[m])
+      return Status::error("model " + std::to_string(m) + " has no surface");
+    if (static_cast<int>(landmarks[m].size()) != featureCount)
+      return Status::error("model " + std::to_string(m) + " has " + std::to_string(landmarks[m].size()) +
+        " features but model 0 has " + std::to_string(featureCount));
+    if (Status s = validateLandmarks(landmarks[m], surfaces[m]->vertexCount(), -1, true); !s.ok())
+      return Status::error("model " + std::to_string(m) + ": " + s.message());
+  }
+
+  // The features to place, and the models that have all the others.
+  std::vector<char> missing(featureCount, 0);
+  std::vector<int> sourcesOf(featureCount, 0);
+  for (const LandmarkList& list : landmarks)
+    for (int f = 0; f < featureCount; ++f)
+    {
+      if (list[f] == kMissingLandmark)
+        missing[f] = 1;
+      else
+        ++sourcesOf[f];
+    }
+  for (int f = 0; f < featureCount; ++f)
+    if (missing[f])
+      out.missingFeatures.push_back(f);
+  if (out.missingFeatures.empty())
+    return {};
+  for (int f : out.missingFeatures)
+    if (sourcesOf[f] == 0)
+      return Status::error("feature " + std::to_string(f) + " is missing on every model: nothing to place it from");
+  int source = options.baseDomainModel;
+  if (source >= modelCount)
+    return Status::error("the base domain's model " + std::to_string(source) + " is not in the collection");
+  if (source < 0)
+    for (int m = 0; m < modelCount && source < 0; ++m)
+      if (missingLandmarkCount(landmarks[m]) == 0)
+        source = m;
+  if (source < 0)
+    return Status::error("no model has every feature: the reduced base domain is built from one that does");
+  if (missingLandmarkCount(landmarks[source]) > 0)
+    return Status::error("model " + std::to_string(source) +
+      ", which should give the base domain, misses features; a base domain is built from a model with every one");
+  // The models that miss the same features are placed together, over a base
+  // domain without just those: dropping every feature missing anywhere from
+  // every model would leave the maps fewer landmarks than each model has.
+  std::vector<std::vector<char>> missingSets;
+  std::vector<int> setOf(modelCount, -1);
+  for (int m = 0; m < modelCount; ++m)
+  {
+    if (missingLandmarkCount(landmarks[m]) == 0)
+      continue;
+    std::vector<char> set(featureCount, 0);
+    for (int f = 0; f < featureCount; ++f)
+      set[f] = landmarks[m][f] == kMissingLandmark;
+    const auto found = std::find(missingSets.begin(), missingSets.end(), set);
+    setOf[m] = static_cast<int>(found - missingSets.begin());
+    if (found == missingSets.end())
+      missingSets.push_back(set);
+  }
+  for (const std::vector<char>& set : missingSets)
+  {
+    const int kept = featureCount - static_cast<int>(std::count(set.begin(), set.end(), 1));
+    if (kept < 4)
+      return Status::error("a model has only " + std::to_string(kept) +
+        " features; placing the missing ones needs a base domain of at least 4");
+  }
+  out.baseDomainModel = source;
+  auto progress = [&](double fraction) {
+    if (options.progress)
+      options.progress(fraction);
+  };
+  // Sources are the landmarks as given: a placed feature is no source.
+  const std::vector<LandmarkList> given = landmarks;
+  for (std::size_t set = 0; set < missingSets.size(); ++set)
+  {
+    const std::vector<char>& dropped = missingSets[set];
+    const double done = static_cast<double>(set) / missingSets.size();
+    const double share = 1.0 / missingSets.size();
+    if (Status s = placeOneSet(surfaces, given, dropped, setOf, static_cast<int>(set), source, options, out,
+          [&](double fraction) { progress(done + share * fraction); });
+        !s.ok())
+      return s;
+  }
+  std::sort(out.placed.begin(), out.placed.end(), [](const PlacedLandmark& a, const PlacedLandmark& b) {
+    return a.model != b.model ? a.model < b.model : a.feature < b.feature;
+  });
+  for (const PlacedLandmark& placed : out.placed)
+    landmarks[placed.model][placed.feature] = placed.vertex;
+  progress(1.0);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {};
+}
+
+} // namespace cmp

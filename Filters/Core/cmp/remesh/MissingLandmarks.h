@@ -1,0 +1,114 @@
+#pragma once
+/// \file MissingLandmarks.h
+/// \brief Places the features a model of a collection misses where the
+///        collection's consistent maps carry them from the models that have
+///        them, so that every model then gets the full L0 and the same
+///        connectivity. Beyond the paper, whose future work lists missing
+///        feature points.
+
+#include <cmp/io/Landmarks.h>
+#include <cmp/map/Straighten.h>
+#include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cmp
+{
+
+/// \brief Tuning of `placeMissingLandmarks()`.
+struct MissingLandmarkOptions
+{
+  /// \brief The model the reduced base domain is built from (an index into
+  ///        the collection; it must have every feature), or -1 for the first
+  ///        model that has every feature.
+  int baseDomainModel = -1;
+  /// \brief Level of the reduced collection's remesh through which the
+  ///        features are carried (1 to `kMaximumRemeshLevel`).
+  int level = 4;
+  /// \brief Rounds of sample relaxation of that remesh.
+  int sampleRelaxationIterations = 4;
+  /// \brief How much a source's likeness to the target counts: a model that
+  ///        has a feature weighs exp(-(r / w)^2) in the feature's place on a
+  ///        model that misses it, r the RMS distance between the two models'
+  ///        remeshes after a similarity fit (each scaled to unit RMS radius)
+  ///        and w this width; 0: every source weighs the same. The most
+  ///        alike models' maps agree best (Documentation/filters/
+  ///        MissingLandmarkPlacer.md, "Measured").
+  double similarityWidth = 0.1;
+  /// \brief How each model of the reduced collection is straightened and
+  ///        mapped (the defaults: curves freed).
+  StraightenOptions straighten;
+  /// \brief Threads that map the models at once (0: one per hardware
+  ///        thread). The result does not depend on it.
+  int threads = 0;
+  /// \brief Called with the fraction (0 to 1) of the work done, if set,
+  ///        always on the calling thread.
+  std::function<void(double)> progress;
+};
+
+/// \brief One feature placed on one model.
+struct PlacedLandmark
+{
+  int model = -1;   ///< Index of the model in the collection.
+  int feature = -1; ///< The feature placed.
+  int vertex = -1;  ///< The vertex that now carries it.
+  Vec3 position = Vec3::Zero(); ///< That vertex's position.
+  int sources = 0;  ///< Models it was carried from.
+  /// \brief Median distance from the vertex to the points the sources carry
+  ///        it to, over the square root of the model's area: how far the
+  ///        collection's maps disagree.
+  double spread = 0.0;
+};
+
+/// \brief What `placeMissingLandmarks()` did.
+struct MissingLandmarkReport
+{
+  std::vector<int> missingFeatures; ///< Every feature missing on some model, increasing.
+  int baseDomainModel = -1;         ///< The model the reduced base domains were built from (-1: nothing to place).
+  std::vector<PlacedLandmark> placed; ///< By model, then feature.
+  /// \brief Per model, why it could not be mapped over a reduced base
+  ///        domain (empty if it was). A model that has every feature and
+  ///        fails is not a source; a model that misses one and fails keeps
+  ///        it missing.
+  std::vector<std::string> modelErrors;
+  double seconds = 0.0; ///< The whole call.
+};
+
+/// \brief Places every missing feature (`kMissingLandmark`) of `landmarks`,
+///        one list per model of `surfaces`, on a vertex of its model.
+///
+/// Method: the models that miss the same set S of features are placed
+/// together. A base domain without S is built from `baseDomainModel`
+/// (`buildBaseDomain()`); every model that has the features outside S is
+/// traced, straightened and mapped over it (`traceFeatureNet()`,
+/// `straighten()`, `threads` at once) and they are remeshed with one
+/// connectivity (`remesh()`). A feature f missing on model m is then
+/// carried from each model c that has it: the point of c's remesh nearest
+/// to c's landmark (a remesh triangle and barycentric coordinates) is the
+/// same triangle and coordinates of m's remesh. The carried points'
+/// geometric median, each weighted by how alike c's remesh is to m's
+/// (`similarityWidth`), is projected onto m, and f goes to the nearest
+/// corner of that triangle that carries no other feature. Measured in
+/// Documentation/filters/MissingLandmarkPlacer.md.
+///
+/// On success `landmarks` has every feature placed on every model that
+/// could be mapped; a model that could not keeps its missing features and
+/// `report->modelErrors` says why. Nothing to place (no feature missing) is
+/// a success that does nothing.
+///
+/// \pre Every surface is closed, genus 0 and manifold (`checkSurface()`).
+/// Fails (Status), naming the problem, on options out of range (a level
+/// outside 1 to `kMaximumRemeshLevel`, negative relaxation rounds or
+/// similarity width), lists of different lengths or
+/// invalid (`validateLandmarks()` with missing features allowed), a
+/// feature missing on every model, fewer than 4 features left, no model
+/// with every feature (or a `baseDomainModel` that misses some), a reduced
+/// base domain that cannot be built, no model that has a missing feature
+/// mapped, and a failed remesh.
+Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  const MissingLandmarkOptions& options = {}, MissingLandmarkReport* report = nullptr);
+
+} // namespace cmp

@@ -1,0 +1,134 @@
+#include "vtkCMPMissingLandmarkPlacer.h"
+
+#include "vtkCMPArrayNames.h"
+#include "vtkCMPCollection.h"
+#include "vtkCMPPolyDataBridge.h"
+
+#include <cmp/remesh/MissingLandmarks.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <memory>
+
+vtkStandardNewMacro(vtkCMPMissingLandmarkPlacer);
+
+int vtkCMPMissingLandmarkPlacer::FillInputPortInformation(int, vtkInformation* info)
+{
+  // The whole collection at once: the composite pipeline must not iterate.
+  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  return 1;
+}
+
+int vtkCMPMissingLandmarkPlacer::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+int vtkCMPMissingLandmarkPlacer::RequestDataObject(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  cmp::bridge::matchOutputType(vtkDataObject::GetData(inputVector[0], 0), outputVector, 0);
+  return 1;
+}
+
+int vtkCMPMissingLandmarkPlacer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  const auto fail = [&](const std::string& message) {
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return 0;
+  };
+  cmp::bridge::SurfaceCollection collection;
+  if (cmp::Status s = cmp::bridge::collectSurfaces(input, collection); !s.ok())
+    return fail(s.message());
+  const std::size_t count = collection.surfaces.size();
+  std::vector<std::unique_ptr<cmp::TriangleMesh>> meshes;
+  std::vector<const cmp::TriangleMesh*> surfaces;
+  std::vector<cmp::LandmarkList> landmarks(count);
+  for (std::size_t m = 0; m < count; ++m)
+  {
+    meshes.push_back(std::make_unique<cmp::TriangleMesh>());
+    if (cmp::Status s = cmp::bridge::toCheckedSurface(collection.surfaces[m], *meshes[m]); !s.ok())
+      return fail(collection.labels[m] + s.message());
+    if (cmp::Status s = cmp::bridge::readLandmarks(collection.surfaces[m], landmarks[m], true); !s.ok())
+      return fail(collection.labels[m] + s.message());
+    surfaces.push_back(meshes[m].get());
+  }
+  // Without FeatureCount a model that misses the last features has fewer:
+  // it has as many as the one with most. With it, the counts must agree.
+  std::size_t featureCount = 0;
+  for (const cmp::LandmarkList& list : landmarks)
+    featureCount = std::max(featureCount, list.size());
+  for (std::size_t m = 0; m < count; ++m)
+  {
+    if (landmarks[m].size() == featureCount)
+      continue;
+    if (cmp::bridge::featureCountOf(collection.surfaces[m]) >= 0)
+      return fail(collection.labels[m] + "its landmark file has " + std::to_string(landmarks[m].size()) +
+        " features but another model's has " + std::to_string(featureCount));
+    landmarks[m].resize(featureCount, cmp::kMissingLandmark);
+  }
+
+  cmp::MissingLandmarkOptions options;
+  options.baseDomainModel = this->BaseDomainModel;
+  options.level = this->Level;
+  options.progress = [this](double f) { this->UpdateProgress(0.95 * f); };
+  cmp::MissingLandmarkReport report;
+  if (cmp::Status s = cmp::placeMissingLandmarks(surfaces, landmarks, options, &report); !s.ok())
+    return fail(s.message());
+  for (std::size_t m = 0; m < count; ++m)
+    if (!report.modelErrors[m].empty() && cmp::missingLandmarkCount(landmarks[m]) > 0)
+      vtkWarningMacro(<< collection.labels[m] << "its missing features could not be placed: "
+                      << report.modelErrors[m]);
+
+  std::vector<vtkSmartPointer<vtkPolyData>> results;
+  for (std::size_t m = 0; m < count; ++m)
+  {
+    auto result = vtkSmartPointer<vtkPolyData>::New();
+    result->ShallowCopy(collection.surfaces[m]);
+    // An own field data: the arrays added below must not reach the input.
+    auto fieldData = vtkSmartPointer<vtkFieldData>::New();
+    fieldData->ShallowCopy(collection.surfaces[m]->GetFieldData());
+    result->SetFieldData(fieldData);
+    cmp::bridge::setFeatureIds(result, landmarks[m]);
+    std::vector<int> placedIds(static_cast<std::size_t>(result->GetNumberOfPoints()), -1);
+    std::vector<int> features;
+    std::vector<double> spreads;
+    for (const cmp::PlacedLandmark& placed : report.placed)
+      if (placed.model == static_cast<int>(m))
+      {
+        placedIds[placed.vertex] = placed.feature;
+        features.push_back(placed.feature);
+        spreads.push_back(placed.spread);
+      }
+    result->GetPointData()->AddArray(cmp::bridge::intArray(cmp::bridge::kPlacedFeatureIdArray, placedIds));
+    result->GetFieldData()->AddArray(cmp::bridge::intArray(cmp::bridge::kPlacedFeaturesArray, features));
+    result->GetFieldData()->AddArray(
+      cmp::bridge::valueArray<vtkDoubleArray>(cmp::bridge::kPlacedFeatureSpreadArray, spreads));
+    results.push_back(result);
+  }
+  cmp::bridge::assembleOutput(input, output, results);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkCMPMissingLandmarkPlacer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "BaseDomainModel: " << this->BaseDomainModel << "\n";
+  os << indent << "Level: " << this->Level << "\n";
+}

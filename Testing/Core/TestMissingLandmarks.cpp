@@ -1,0 +1,142 @@
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/remesh/MissingLandmarks.h>
+#include "TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace cmp;
+
+namespace
+{
+
+void expectError(const Status& status, const std::string& fragment)
+{
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(status.message().find(fragment), std::string::npos) << "message: " << status.message();
+}
+
+} // namespace
+
+// Issue 27 A: take landmarks away from models where we know them and place
+// them from the others. The issue's target is a mean error below 5% of
+// sqrt(area) and a worst below 12%.
+TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
+{
+  std::vector<test::LandmarkedModel> models;
+  for (const char* name : { "381", "383", "384", "388", "391" })
+    models.push_back(test::landmarkedRealModel(name));
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+  for (const test::LandmarkedModel& model : models)
+  {
+    surfaces.push_back(&model.data.mesh);
+    landmarks.push_back(model.landmarks);
+  }
+  // Two features of one model and one of another (13: the root of the tail).
+  const std::vector<std::pair<int, int>> taken = { { 1, 3 }, { 1, 17 }, { 3, 13 } };
+  for (auto [m, f] : taken)
+    landmarks[m][f] = kMissingLandmark;
+
+  MissingLandmarkReport report;
+  const Status status = placeMissingLandmarks(surfaces, landmarks, {}, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_EQ(report.missingFeatures, (std::vector<int>{ 3, 13, 17 }));
+  EXPECT_EQ(report.baseDomainModel, 0);
+  for (std::size_t m = 0; m < models.size(); ++m)
+    EXPECT_EQ(report.modelErrors[m], "") << models[m].name;
+  ASSERT_EQ(report.placed.size(), taken.size());
+  double sum = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < taken.size(); ++i)
+  {
+    const auto [m, f] = taken[i];
+    const PlacedLandmark& placed = report.placed[i];
+    EXPECT_EQ(placed.model, m);
+    EXPECT_EQ(placed.feature, f);
+    EXPECT_EQ(landmarks[m][f], placed.vertex);
+    EXPECT_EQ(placed.sources, 3); // the three models with every feature
+    const TriangleMesh& mesh = models[m].data.mesh;
+    const double error =
+      (mesh.points[placed.vertex] - mesh.points[models[m].landmarks[f]]).norm() / std::sqrt(surfaceArea(mesh));
+    sum += error;
+    worst = std::max(worst, error);
+    EXPECT_LT(error, 0.12) << models[m].name << " feature " << f;
+  }
+  EXPECT_LT(sum / taken.size(), 0.05);
+  for (const LandmarkList& list : landmarks)
+    EXPECT_EQ(missingLandmarkCount(list), 0);
+  EXPECT_TRUE(validateLandmarks(landmarks[1], surfaces[1]->vertexCount()).ok());
+}
+
+TEST(MissingLandmarks, NothingMissingIsNothingToDo)
+{
+  const test::LandmarkedModel model = test::landmarkedRealModel("391");
+  std::vector<LandmarkList> landmarks = { model.landmarks };
+  MissingLandmarkReport report;
+  ASSERT_TRUE(placeMissingLandmarks({ &model.data.mesh }, landmarks, {}, &report).ok());
+  EXPECT_TRUE(report.placed.empty());
+  EXPECT_EQ(report.baseDomainModel, -1);
+  EXPECT_EQ(landmarks[0], model.landmarks);
+}
+
+TEST(MissingLandmarks, RefusesWhatCannotBePlaced)
+{
+  const TriangleMesh mesh = test::sphere(2);
+  const LandmarkList full = { 0, 1, 2, 3, 4, 5 };
+  LandmarkList gap = full;
+  gap[2] = kMissingLandmark;
+  std::vector<LandmarkList> landmarks = { gap, gap };
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "feature 2 is missing on every model");
+  landmarks = { gap, full, { 0, 1, 2, kMissingLandmark, 4, 5 } };
+  MissingLandmarkOptions options;
+  options.baseDomainModel = 0;
+  expectError(placeMissingLandmarks({ &mesh, &mesh, &mesh }, landmarks, options),
+    "model 0, which should give the base domain, misses features");
+  landmarks = { gap, { 0, 1, 2, kMissingLandmark, 4, 5 } };
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "no model has every feature");
+  landmarks = { { kMissingLandmark, 1, kMissingLandmark, 3, 4 }, { 0, 1, 2, 3, 4 } };
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "a model has only 3 features");
+  landmarks = { full, { 0, 1 } };
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "model 1 has 2 features but model 0 has 6");
+  landmarks = { full, { 0, 1, 2, 3, 4, 99 } };
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "model 1: landmark 5 is vertex 99");
+}
+
+// A base domain is built from a model with every feature.
+TEST(MissingLandmarks, TheBaseDomainBuilderRefusesAModelThatMissesOne)
+{
+  const test::LandmarkedModel model = test::landmarkedRealModel("391");
+  LandmarkList landmarks = model.landmarks;
+  landmarks[4] = kMissingLandmark;
+  BaseDomain domain;
+  expectError(buildBaseDomain(model.data.mesh, landmarks, domain), "landmark 4 is missing");
+}
+
+// Identical models carry a feature exactly, whatever the number of threads.
+TEST(MissingLandmarks, IdenticalModelsGiveTheTrueVertexWithAnyThreadCount)
+{
+  const TriangleMesh mesh = test::bumpySphere(3);
+  LandmarkList truth;
+  for (const Vec3& direction : { Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1),
+         Vec3(0, 0, -1), Vec3(0.6, 0.6, 0.5) })
+    truth.push_back(test::nearestVertex(mesh, direction));
+  for (int threads : { 1, 2 })
+  {
+    std::vector<LandmarkList> landmarks = { truth, truth, truth };
+    landmarks[1][6] = kMissingLandmark;
+    landmarks[2][2] = kMissingLandmark;
+    MissingLandmarkOptions options;
+    options.threads = threads;
+    MissingLandmarkReport report;
+    const Status status = placeMissingLandmarks({ &mesh, &mesh, &mesh }, landmarks, options, &report);
+    ASSERT_TRUE(status.ok()) << status.message();
+    EXPECT_EQ(landmarks[1], truth) << threads << " threads";
+    EXPECT_EQ(landmarks[2], truth) << threads << " threads";
+    ASSERT_EQ(report.placed.size(), 2u);
+    EXPECT_EQ(report.placed[0].model, 1);
+    EXPECT_EQ(report.placed[0].sources, 1); // model 2 misses another feature
+    EXPECT_LT(report.placed[0].spread, 0.01); // the remesh lies within a chord of the surface
+  }
+}

@@ -1,0 +1,123 @@
+"""Landmark files that mark features missing (-1) in ParaView (issue 27 A):
+Landmarks From File leaves them off FeatureId and says how many features
+the file has, Check Inputs accepts them with AllowMissingLandmarks and
+names them without, Base Domain Builder refuses such a model, the landmark
+writer writes them back as missing, and Missing Landmark Placer places them
+from the models of the collection that have them, marking what it placed.
+On the shipped examples (6 landmarks each): blob misses feature 2 (.vts),
+peanut its last feature (.csv, nan,nan,nan), capsule has all.
+
+Usage: pvpython TestPluginMissingLandmarks.py PLUGIN.so EXAMPLES_DIR OUTPUT_DIR
+"""
+import math
+import os
+import sys
+
+sys.dont_write_bytecode = True  # keep the source folder clean
+
+from paraview import servermanager
+from paraview import simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from cmp_test_support import ErrorCapture, check, check_contains, check_equal, load_plugin_proxies, write_text
+
+
+def feature_ids(surface):
+    return {int(f): v for v, f in enumerate(vtk_to_numpy(surface.GetPointData().GetArray("FeatureId"))) if f >= 0}
+
+
+def main():
+    plugin, examples, output = sys.argv[1:4]
+    os.makedirs(output, exist_ok=True)
+    names = load_plugin_proxies(plugin)
+    with open(os.path.join(examples, "blob.vts")) as f:
+        blob_lines = f.read().splitlines()
+    true_blob = int(blob_lines[2].split()[0])
+    blob_lines[2] = "-1"
+    blob_vts = write_text(os.path.join(output, "blob-missing.vts"), "\n".join(blob_lines) + "\n")
+    with open(os.path.join(examples, "peanut.csv")) as f:
+        peanut_rows = f.read().splitlines()
+    peanut_rows[6] = "nan,nan,nan"
+    peanut_csv = write_text(os.path.join(output, "peanut-missing.csv"), "\n".join(peanut_rows) + "\n")
+
+    def landmarked(mesh, landmarks):
+        reader = names["ConsistentMeshSurfaceReader"](FileName=os.path.join(examples, mesh))
+        return reader, names["LandmarksFromFile"](Input=reader, LandmarkFile=landmarks)
+
+    blob_reader, blob = landmarked("blob.off", blob_vts)
+    _, capsule = landmarked("capsule.obj", os.path.join(examples, "capsule.pinned"))
+    peanut_reader, peanut = landmarked("peanut.off", peanut_csv)
+    read = servermanager.Fetch(blob)
+    check_equal(sorted(feature_ids(read)), [0, 1, 3, 4, 5], "blob's features read")
+    check_equal(int(read.GetFieldData().GetArray("FeatureCount").GetValue(0)), 6, "blob's FeatureCount")
+    read = servermanager.Fetch(peanut)
+    check_equal(sorted(feature_ids(read)), [0, 1, 2, 3, 4], "peanut's features read")
+    check_equal(int(read.GetFieldData().GetArray("FeatureCount").GetValue(0)), 6, "peanut's FeatureCount")
+
+    # Check Inputs names the missing feature, even the last one, unless
+    # missing features are allowed.
+    for source, feature in ((blob, 2), (peanut, 5)):
+        check_inputs = names["CheckInputs"](Input=source, RequireLandmarks=1)
+        with ErrorCapture(check_inputs.GetClientSideObject()) as errors:
+            check_inputs.UpdatePipeline()
+        check_contains(errors.text, "missing landmark: feature %d is on no vertex" % feature, "Check Inputs")
+        check_inputs.AllowMissingLandmarks = 1
+        with ErrorCapture(check_inputs.GetClientSideObject()) as errors:
+            check_inputs.UpdatePipeline()
+        check_equal(errors.text, "", "Check Inputs with AllowMissingLandmarks")
+    builder = names["BaseDomainBuilder"](Input=blob)
+    with ErrorCapture(builder.GetClientSideObject()) as errors:
+        builder.UpdatePipeline()
+    check_contains(errors.text, "this model misses landmark 2: a base domain is built from a model with every "
+                   "landmark", "Base Domain Builder")
+
+    # The landmark writer writes a missing feature as missing.
+    for extension, line in (("vts", "-1"), ("pinned", "lk -1"), ("csv", "nan,nan,nan")):
+        path = os.path.join(output, "peanut-saved." + extension)
+        simple.SaveData(path, proxy=peanut)
+        with open(path) as f:
+            lines = f.read().splitlines()
+        check_equal(lines[-1], line, "the last line of " + path)
+        reread = names["LandmarksFromFile"](Input=peanut_reader, LandmarkFile=path)
+        check_equal(sorted(feature_ids(servermanager.Fetch(reread))), [0, 1, 2, 3, 4], path + " read back")
+
+    # The collection: the placer completes every model.
+    group = simple.GroupDatasets(Input=[blob, capsule, peanut])
+    placer = names["MissingLandmarkPlacer"](Input=group)
+    placed = servermanager.Fetch(placer)
+    check_equal(placed.GetNumberOfBlocks(), 3, "blocks")
+    expected = {0: ([2], true_blob), 1: ([], None), 2: ([5], None)}
+    for block, (features, truth) in expected.items():
+        surface = placed.GetBlock(block)
+        ids = feature_ids(surface)
+        check_equal(sorted(ids), list(range(6)), "block %d's features after placing" % block)
+        marks = {int(f): v for v, f in enumerate(vtk_to_numpy(surface.GetPointData().GetArray("PlacedFeatureId")))
+                 if f >= 0}
+        check_equal(sorted(marks), features, "block %d's PlacedFeatureId" % block)
+        field = surface.GetFieldData()
+        check_equal([int(field.GetArray("PlacedFeatures").GetValue(i))
+                     for i in range(field.GetArray("PlacedFeatures").GetNumberOfTuples())], features,
+                    "block %d's PlacedFeatures" % block)
+        for feature in features:
+            check_equal(ids[feature], marks[feature], "block %d: FeatureId and PlacedFeatureId" % block)
+        if truth is not None:
+            # The blob's missing feature, carried from the capsule, lands
+            # near where the file had it (a bump of the blob).
+            points = vtk_to_numpy(surface.GetPoints().GetData())
+            span = max(points.max(axis=0) - points.min(axis=0))
+            error = math.dist(points[ids[2]], points[truth])
+            check(error < 0.25 * span, "blob's feature 2 placed %.3f from the file's (span %.3f)" % (error, span))
+    # A complete model passes through as it was.
+    capsule_before = feature_ids(servermanager.Fetch(capsule))
+    check_equal(feature_ids(placed.GetBlock(1)), capsule_before, "the capsule's landmarks")
+
+    # No model with every feature: the placer says so.
+    lonely = names["MissingLandmarkPlacer"](Input=simple.GroupDatasets(Input=[blob, peanut]))
+    with ErrorCapture(lonely.GetClientSideObject()) as errors:
+        lonely.UpdatePipeline()
+    check_contains(errors.text, "no model has every feature", "placer without a complete model")
+    print("missing landmarks read, checked, written and placed on the shipped examples")
+
+
+if __name__ == "__main__":
+    main()
