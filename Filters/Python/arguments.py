@@ -40,7 +40,9 @@ def parse_arguments(argv):
     )
     source = parser.add_mutually_exclusive_group()
     source.add_argument("--base-domain", help="base domain L0 (.vtp with FeatureId, or .obj/.off: vertex i = landmark i)")
-    source.add_argument("--base-domain-from", type=int, metavar="N", help="build L0 from the N-th model (0-based)")
+    source.add_argument("--base-domain-from", type=int, metavar="N",
+                        help="build L0 from the N-th model (0-based; the first one with every landmark if it "
+                             "misses some)")
     parser.add_argument("--collection", metavar="FOLDER",
                         help="run the collection described by FOLDER/collection.json instead of --mesh and "
                         "--landmarks (with neither, the default: the CGAL quadrupeds of Debian's libcgal-demo, "

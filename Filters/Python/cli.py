@@ -30,6 +30,12 @@ Usage:
                     --output DIR
   mpirun -np N consistent-remesh ARGS   (the models shared out over N processes)
 
+A landmark file may mark features missing on its model (-1; see
+Documentation/data-formats.md): they are placed from the models that have
+them (Missing Landmark Placer) before the base domain is used, and the
+report says where; the base domain is built from a model with every
+landmark.
+
 Each model is named by its mesh file name without extension. A model that
 fails is reported and does not stop the others (its reading and its tracing
 and straightening run in child processes, so a crash fails it alone, and so
@@ -64,7 +70,9 @@ from .stages import (
     Model,
     build_base_domain,
     check_against_base_domain,
+    apply_placed_landmarks,
     load_base_domain,
+    place_missing_landmarks,
     read_landmarked_surface,
     straighten_net,
     trace_net,
@@ -113,6 +121,7 @@ def main(argv=None):
         if error is not None:
             mine[position][1].fail(error)
 
+    _place_missing_landmarks(args, models, mine, ranks, report)
     domain = _base_domain(args, models, ranks, report)
 
     def processing(index, model):
@@ -207,6 +216,82 @@ def _prepare(args, report):
         print("consistent-remesh: %s" % problem, file=sys.stderr)
         return 2
     return None
+
+
+def _place_missing_landmarks(args, models, mine, ranks, report):
+    """Places the landmarks some models' files mark missing (-1) from the
+    models that have them (Missing Landmark Placer, in a child process on
+    rank 0), so that every model gets the full base domain. A model whose
+    features cannot be placed fails with the reason; the others go on. A
+    --base-domain-from model that misses landmarks gives way to the first
+    one that has them all (said, and in the report)."""
+    # The reading children leave what is missing in the report.
+    gathered = ranks.all_gather([(index, model.report.get("missing_landmarks", [])) for index, model in mine
+                                 if model.surface is not None])
+    readable = dict(entry for part in gathered for entry in part)
+    missing = {index: features for index, features in readable.items() if features}
+    if not missing:
+        return
+    for index in sorted(missing):
+        models[index].missing = missing[index]
+    complete = [index for index in sorted(readable) if index not in missing]
+    if args.base_domain is None and args.base_domain_from in missing and complete:
+        report["base_domain_from"] = {"asked": models[args.base_domain_from].name,
+                                      "reason": "it misses landmarks %s" % ", ".join(
+                                          map(str, missing[args.base_domain_from])),
+                                      "used": models[complete[0]].name}
+        if ranks.rank == 0:
+            print("base domain from %s instead of %s, which misses landmarks %s"
+                  % (models[complete[0]].name, models[args.base_domain_from].name,
+                     ", ".join(map(str, missing[args.base_domain_from]))), flush=True)
+        args.base_domain_from = complete[0]
+    order = sorted(readable)
+    result = None
+    start = time.perf_counter()
+    if ranks.rank == 0:
+        def place():
+            for index in order:
+                if models[index].surface is None:  # read by another rank
+                    read_landmarked_surface(models[index])
+            source = order.index(args.base_domain_from) if args.base_domain is None and \
+                args.base_domain_from in complete else -1
+            return place_missing_landmarks([models[index] for index in order], source)
+        print("placing %d missing landmark%s on %d model%s from the others"
+              % (sum(map(len, missing.values())), "" if sum(map(len, missing.values())) == 1 else "s",
+                 len(missing), "" if len(missing) == 1 else "s"), flush=True)
+        try:
+            result = run_in_child("place", "collection", place, "placing the missing landmarks",
+                                  args.model_timeout)
+        except StageError as error:
+            result = str(error)
+    result = ranks.broadcast(result)
+    report["placement"] = {"models": [models[index].name for index in sorted(missing)],
+                           "seconds": round(time.perf_counter() - start, 4)}
+    if isinstance(result, str):
+        report["placement"]["error"] = result
+    for position, index in enumerate(order):
+        if index not in missing:
+            continue
+        model = models[index]
+        if isinstance(result, str):
+            error, entries = "its missing landmarks could not be placed: %s" % result, []
+        else:
+            entries, error = result[position]
+            error = error and "its missing landmarks could not be placed: " + error
+        model.placed = {entry["feature"]: entry["vertex"] for entry in entries}
+        if model.surface is not None:
+            model.report["placed_landmarks"] = entries
+            if error:
+                model.fail(error)
+            else:
+                apply_placed_landmarks(model, model.placed)
+        if ranks.rank == 0:
+            for entry in entries:
+                print("  %s: feature %d placed at vertex %d (the models that have it agree within %.1f%% of "
+                      "the square root of its area)" % (model.name, entry["feature"], entry["vertex"],
+                                                        100 * entry["spread_per_sqrt_area"]), flush=True)
+            if error:
+                print("  %s: FAILED: %s" % (model.name, error), flush=True)
 
 
 def _base_domain(args, models, ranks, report):

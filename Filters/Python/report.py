@@ -148,6 +148,14 @@ def _summary(report):
         angle = ", smallest angle %.2f°" % domain["min_angle_degrees"] if "min_angle_degrees" in domain else ""
         lines.append("Base domain: %d vertices, %d triangles, %d edges%s (%s)."
                      % (domain["vertices"], domain["triangles"], domain["edges"], angle, domain["source"]))
+    placed = ["%s: %s" % (name, ", ".join("feature %d at vertex %d" % (entry["feature"], entry["vertex"])
+                                          for entry in model["placed_landmarks"]))
+              for name, model in report["models"].items() if model.get("placed_landmarks")]
+    if placed:
+        lines.append("Landmarks missing in the files, placed from the models that have them (before the "
+                     "base domain was used): %s." % "; ".join(placed))
+    if "error" in report.get("placement", {}):
+        lines.append("The missing landmarks could not be placed: %s." % report["placement"]["error"])
     if report.get("failed"):
         lines.append("**Failed:** %s." % ", ".join(report["failed"]))
     return [Heading("Summary")] + [Paragraph(line) for line in lines]

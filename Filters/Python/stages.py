@@ -39,6 +39,10 @@ class Model:
         self.surface = None
         self.parameterized = None  # NetStraightener's surface, the remesher's input
         self.curves = None  # the last net filter's curves
+        # Features this model's landmark file marks missing, once read, and
+        # where the collection placed them ({feature: vertex}).
+        self.missing = []
+        self.placed = {}
         self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
 
     def without_own_name(self, message):
@@ -75,7 +79,86 @@ def read_landmarked_surface(model):
     check = cmp.vtkCMPInputCheck()
     check.SetInputData(surface)
     check.RequireLandmarksOn()
+    check.AllowMissingLandmarksOn()
     model.surface = model.timed("check", run, check)
+    model.report["landmark_count"] = landmark_count(model.surface)
+    model.missing = missing_features(model.surface)
+    if model.missing:
+        model.report["missing_landmarks"] = model.missing
+    if model.placed:
+        apply_placed_landmarks(model, model.placed)
+
+
+def missing_features(surface):
+    """The features of `surface` that no vertex carries, below its field
+    array FeatureCount (the features its landmark file has)."""
+    count = surface.GetFieldData().GetArray(array_names.FEATURE_COUNT_ARRAY)
+    ids = surface.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY)
+    if count is None or ids is None:
+        return []
+    present = {int(ids.GetTuple1(v)) for v in range(ids.GetNumberOfTuples())}
+    return [f for f in range(int(count.GetTuple1(0))) if f not in present]
+
+
+def place_missing_landmarks(models, base_domain_model):
+    """Missing Landmark Placer on the surfaces of `models` (a multiblock, one
+    block per model): for each model, the list of what was placed on it,
+    {"feature", "vertex", "position", "sources", "spread"}, and the message
+    of a model whose features could not be placed (None if they were).
+    Raises StageError if the filter fails."""
+    blocks = vtkMultiBlockDataSet()
+    for index, model in enumerate(models):
+        blocks.SetBlock(index, model.surface)
+        blocks.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), model.name)
+    placer = cmp.vtkCMPMissingLandmarkPlacer()
+    placer.SetInputData(blocks)
+    placer.SetBaseDomainModel(base_domain_model)
+    placed = run(placer)
+    results = []
+    for index, model in enumerate(models):
+        surface = placed.GetBlock(index)
+        marks = surface.GetPointData().GetArray(array_names.PLACED_FEATURE_ID_ARRAY)
+        spreads = surface.GetFieldData().GetArray(array_names.PLACED_FEATURE_SPREAD_ARRAY)
+        features = surface.GetFieldData().GetArray(array_names.PLACED_FEATURES_ARRAY)
+        spread_of = {int(features.GetTuple1(i)): spreads.GetTuple1(i) for i in range(features.GetNumberOfTuples())}
+        entries = []
+        for vertex in range(marks.GetNumberOfTuples()):
+            feature = int(marks.GetTuple1(vertex))
+            if feature >= 0:
+                entries.append({"feature": feature, "vertex": vertex,
+                                "position": [significant(x) for x in surface.GetPoint(vertex)],
+                                "spread_per_sqrt_area": significant(spread_of[feature])})
+        entries.sort(key=lambda entry: entry["feature"])
+        left = [f for f in model.missing if f not in {entry["feature"] for entry in entries}]
+        results.append((entries, "feature%s %s could not be placed" % ("" if len(left) == 1 else "s",
+                                                                      ", ".join(map(str, left))) if left else None))
+    return results
+
+
+def mark_placed_landmarks(remesh, placed):
+    """Adds the point array PlacedFeatureId to a remesh: f at the vertex of
+    each placed feature f (its FeatureId), -1 elsewhere, so that the
+    landmarks the collection placed show in ParaView."""
+    ids = remesh.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY)
+    marks = vtkIntArray()
+    marks.SetName(array_names.PLACED_FEATURE_ID_ARRAY)
+    marks.SetNumberOfValues(remesh.GetNumberOfPoints())
+    for vertex in range(remesh.GetNumberOfPoints()):
+        feature = int(ids.GetTuple1(vertex))
+        marks.SetValue(vertex, feature if feature in placed else -1)
+    remesh.GetPointData().AddArray(marks)
+
+
+def apply_placed_landmarks(model, placed):
+    """Marks the placed features ({feature: vertex}) in the FeatureId of
+    `model`'s surface; the model then has every feature."""
+    ids = model.surface.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY)
+    marked = vtkIntArray()
+    marked.DeepCopy(ids)
+    marked.SetName(array_names.FEATURE_ID_ARRAY)
+    for feature, vertex in placed.items():
+        marked.SetValue(int(vertex), int(feature))
+    model.surface.GetPointData().AddArray(marked)
     model.report["landmark_count"] = landmark_count(model.surface)
 
 
@@ -260,6 +343,8 @@ def remesh_collection(models, domain, level, adaptive_tolerance, output_folder, 
             "mean_shape_quality": round(value(array_names.MEAN_SHAPE_QUALITY_FIELD), 4),
             "seconds": round(value(array_names.TOTAL_SECONDS_FIELD), 4),
         })
+        if model.placed:
+            mark_placed_landmarks(remesh, model.placed)
         write_polydata(remesh, os.path.join(output_folder, model.name + ".remesh.vtp"))
     write_multiblock(remeshes, os.path.join(output_folder, "collection.vtm"))
     connectivity = remesher.GetOutputDataObject(1)

@@ -43,6 +43,7 @@ from cmp_test_support import (
     landmarked_shrec_models,
     read_off_header,
     read_pinned,
+    read_vts,
     timeout_factor,
     triangles_of,
     write_compressed_vtp,
@@ -1761,6 +1762,97 @@ def case_cut_along_the_map(tmp):
         check("kept their straightened places" not in stdout, "a console line for curves kept")
 
 
+def off_area(path):
+    """The surface area of a triangle OFF file."""
+    import numpy
+    with open(path) as f:
+        words = f.read().split()
+    vertices, faces = int(words[1]), int(words[2])
+    points = numpy.array(words[4:4 + 3 * vertices], dtype=float).reshape(-1, 3)
+    rows = numpy.array(words[4 + 3 * vertices:4 + 3 * vertices + 4 * faces], dtype=int).reshape(-1, 4)[:, 1:]
+    a, b, c = points[rows[:, 0]], points[rows[:, 1]], points[rows[:, 2]]
+    return float(0.5 * numpy.linalg.norm(numpy.cross(b - a, c - a), axis=1).sum())
+
+
+def case_missing_landmarks(tmp):
+    """Issue 27 A: landmark files that mark features missing (-1) on some
+    models. The collection places them from the models that have them, the
+    base domain comes from a model with every landmark although
+    --base-domain-from names one that misses some, and every model is
+    remeshed with the same connectivity, the placed landmarks within 12% of
+    the square root of the area of the true ones. A collection where no
+    model has every landmark fails those models with the reason, and the
+    report is written."""
+    import numpy
+    names = ["381", "384", "388", "391"]
+    missing = {"381": [9], "384": [12, 17]}
+    pairs = []
+    for name in names:
+        landmarks = shrec(name, "vts")
+        if name in missing:
+            with open(landmarks) as f:
+                lines = f.read().splitlines()
+            for feature in missing[name]:
+                lines[feature] = "-1"
+            landmarks = os.path.join(tmp, name + ".vts")
+            with open(landmarks, "w") as f:
+                f.write("\n".join(lines) + "\n")
+        pairs.append((shrec(name, "off"), landmarks))
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3",
+                                                                     "--no-render"], out)
+    check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout, stderr))
+    check_models_ok(report, pairs, "missing landmarks")
+    check_equal(report.get("base_domain_from"), {"asked": "381", "reason": "it misses landmarks 9", "used": "388"},
+                "the base domain's model")
+    check_contains(stdout, "base domain from 388 instead of 381, which misses landmarks 9", "stdout")
+    check_domain_report(report["base_domain"], "built from 388", "missing landmarks")
+    check_remeshed(out, report, stdout, names, 3)
+    check_equal(report["placement"]["models"], ["381", "384"], "models placed on")
+    for name in names:
+        model = report["models"][name]
+        check_equal(model.get("missing_landmarks"), missing.get(name), name + ": missing landmarks")
+        placed = model.get("placed_landmarks")
+        if name not in missing:
+            check(placed is None, name + ": landmarks placed on a complete model")
+            continue
+        check_equal([entry["feature"] for entry in placed], missing[name], name + ": placed features")
+        truth = dict(enumerate(read_vts(shrec(name, "vts"))))
+        scale = math.sqrt(off_area(shrec(name, "off")))
+        remesh = read_vtp(os.path.join(out, name + ".remesh.vtp"))
+        feature_ids = remesh.GetPointData().GetArray("FeatureId")
+        at = {int(feature_ids.GetValue(v)): v for v in range(remesh.GetNumberOfPoints())
+              if feature_ids.GetValue(v) >= 0}
+        check_equal(sorted(at), list(range(21)), name + ": remesh landmarks")
+        marks = remesh.GetPointData().GetArray("PlacedFeatureId")
+        check(marks is not None, name + ": no PlacedFeatureId on the remesh")
+        check_equal({int(marks.GetValue(v)): v for v in range(remesh.GetNumberOfPoints()) if marks.GetValue(v) >= 0},
+                    {f: at[f] for f in missing[name]}, name + ": PlacedFeatureId")
+        for entry in placed:
+            error = numpy.linalg.norm(numpy.array(entry["position"]) - truth[entry["feature"]][1]) / scale
+            check(error < 0.12, "%s: feature %d placed %.1f%% of sqrt(area) from the true one"
+                  % (name, entry["feature"], 100 * error))
+            check_contains(stdout, "%s: feature %d placed at vertex %d" % (name, entry["feature"], entry["vertex"]),
+                           "stdout")
+            # The remesh's landmark vertex is the placed landmark.
+            check(numpy.linalg.norm(numpy.array(remesh.GetPoint(at[entry["feature"]])) -
+                                    numpy.array(entry["position"])) < 1e-5,
+                  "%s: the remesh's feature %d is not where it was placed" % (name, entry["feature"]))
+    with open(os.path.join(out, "report.md")) as f:
+        check_contains(f.read(), "381: feature 9 at vertex", "report.md")
+
+    # No model has every landmark: nothing to place them from.
+    pairs = [(pairs[0][0], pairs[0][1]), (pairs[1][0], pairs[1][1])]
+    out = os.path.join(tmp, "out-none-complete")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--level", "2", "--no-render"], out)
+    check(status != 0, "exit status 0 with no model to place the missing landmarks from")
+    check_equal(sorted(report["failed"]), ["381", "384"], "failed models")
+    for name in ("381", "384"):
+        check_contains(report["models"][name].get("error", ""), "its missing landmarks could not be placed: ",
+                       name + "'s error")
+        check_contains(report["models"][name].get("error", ""), "no model has every feature", name + "'s error")
+
+
 CASES = {
     "default-collection": case_default_collection,
     "shipped-examples": case_shipped_examples,
@@ -1778,6 +1870,7 @@ CASES = {
     "relax-samples": case_relax_samples,
     "argument-errors": case_argument_errors,
     "base-domain-mismatch": case_base_domain_mismatch,
+    "missing-landmarks": case_missing_landmarks,
 }
 
 
