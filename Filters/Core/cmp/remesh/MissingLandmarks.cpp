@@ -3,6 +3,7 @@
 #include <cmp/basedomain/BaseDomainBuilder.h>
 #include <cmp/layout/NetTracer.h>
 #include <cmp/mesh/SurfaceDistance.h>
+#include <cmp/numerics/Threads.h>
 #include <cmp/remesh/Remesh.h>
 #include <cmp/remesh/SemiRegularRemesher.h>
 
@@ -10,12 +11,10 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <thread>
 
 namespace cmp
 {
@@ -152,47 +151,26 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     PatchParameterization map;
     ParameterizedSurface surface;
   };
-  // Each model is mapped on its own: a thread takes the next one not yet
-  // taken, and the calling thread (the only one to report progress) works
-  // too.
+  // Each model is mapped on its own, the models shared out over threads;
+  // the calling thread alone reports progress.
   const int count = static_cast<int>(members.size());
   std::vector<std::unique_ptr<Mapped>> mapped(members.size());
   std::vector<Status> statuses(members.size());
-  std::atomic<int> next{ 0 };
-  std::atomic<int> done{ 0 };
-  const auto work = [&](bool reportProgress) {
-    for (int i = next++; i < count; i = next++)
-    {
+  forEachOnThreads(
+    count, options.threads,
+    [&](int i) {
       const int m = members[i];
       auto one = std::make_unique<Mapped>();
-      try
-      {
-        statuses[i] = traceFeatureNet(*surfaces[m], reduced(m), domain, one->traced);
-        if (statuses[i].ok())
-          statuses[i] = straighten(one->traced, domain, one->straight, one->map, options.straighten);
-        if (statuses[i].ok())
-          statuses[i] = one->surface.build(one->straight.net, domain, one->map);
-      }
-      catch (const std::exception& error)
-      {
-        statuses[i] = Status::error(std::string("mapping failed: ") + error.what());
-      }
+      statuses[i] = traceFeatureNet(*surfaces[m], reduced(m), domain, one->traced);
+      if (statuses[i].ok())
+        statuses[i] = straighten(one->traced, domain, one->straight, one->map, options.straighten);
+      if (statuses[i].ok())
+        statuses[i] = one->surface.build(one->straight.net, domain, one->map);
       if (statuses[i].ok())
         mapped[i] = std::move(one);
-      const int finished = ++done;
-      if (reportProgress)
-        progress(0.9 * finished / count);
-    }
-  };
-  const int threadCount = std::clamp(
-    options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
-    std::max(1, count));
-  std::vector<std::thread> helpers;
-  for (int t = 1; t < threadCount; ++t)
-    helpers.emplace_back(work, false);
-  work(true);
-  for (std::thread& helper : helpers)
-    helper.join();
+    },
+    [&](int i, const char* message) { statuses[i] = Status::error(std::string("mapping failed: ") + message); },
+    [&](int done) { progress(0.9 * done / count); });
   std::vector<RemeshModel> remeshModels;
   std::vector<int> remeshed; // the model of each one remeshed
   for (int i = 0; i < count; ++i)

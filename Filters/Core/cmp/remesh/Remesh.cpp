@@ -3,10 +3,10 @@
 #include <cmp/mesh/SurfaceDistance.h>
 #include <cmp/mesh/TriangleMesh.h>
 #include <cmp/mesh/TriangleShape.h>
+#include <cmp/numerics/Threads.h>
 #include <cmp/remesh/SampleRelaxation.h>
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <functional>
 #include <chrono>
@@ -14,7 +14,6 @@
 #include <limits>
 #include <sstream>
 #include <string>
-#include <thread>
 
 namespace cmp
 {
@@ -240,43 +239,22 @@ Status placeCollection(const BaseDomain& domain, const std::vector<RemeshModel>&
   const std::vector<int> nearestLandmarks = nearestLandmarkOfTriangles(result.mesh, domain.mesh.vertexCount());
   result.models.assign(localModels.size(), RemeshedModel{});
   local.models.assign(localModels.size(), RemeshModelReport{});
-  // Each model is placed on its own: a thread takes the next model not yet
-  // taken, and the calling thread (the only one to report progress) works
-  // too. The first model that fails, in the order given, is reported.
+  // Each model is placed on its own, the models shared out over threads;
+  // the calling thread alone reports progress. The first model that fails,
+  // in the order given, is reported.
   const int count = static_cast<int>(localModels.size());
-  const int threadCount = std::clamp(
-    options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
-    std::max(1, count));
   std::vector<Status> placed(localModels.size());
-  std::atomic<int> next{ 0 };
-  std::atomic<int> done{ 0 };
-  int reported = 0; // models done when the calling thread last reported progress
-  const auto work = [&](bool reportProgress) {
-    for (int m = next++; m < count; m = next++)
-    {
-      try
-      {
-        placed[m] = placeModel(domain, result.mesh, nearestLandmarks, localModels[m], options, result.models[m],
-          local.models[m], far ? &(*far)[m] : nullptr);
-      }
-      catch (const std::exception& error)
-      {
-        placed[m] = Status::error(std::string("placing the remesh failed: ") + error.what());
-      }
-      const int finished = ++done;
-      if (reportProgress && progress && finished > reported)
-      {
-        reported = finished;
-        progress(static_cast<double>(finished) / count);
-      }
-    }
-  };
-  std::vector<std::thread> helpers;
-  for (int t = 1; t < threadCount; ++t)
-    helpers.emplace_back(work, false);
-  work(true);
-  for (std::thread& helper : helpers)
-    helper.join();
+  forEachOnThreads(
+    count, options.threads,
+    [&](int m) {
+      placed[m] = placeModel(domain, result.mesh, nearestLandmarks, localModels[m], options, result.models[m],
+        local.models[m], far ? &(*far)[m] : nullptr);
+    },
+    [&](int m, const char* message) { placed[m] = Status::error(std::string("placing the remesh failed: ") + message); },
+    [&](int done) {
+      if (progress)
+        progress(static_cast<double>(done) / count);
+    });
   for (int m = 0; m < count; ++m)
     if (!placed[m].ok())
     {
