@@ -86,6 +86,7 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
   cmp::MissingLandmarkOptions options;
   options.baseDomainModel = this->BaseDomainModel;
   options.level = this->Level;
+  options.maximumSources = this->MaximumSources;
   options.progress = [this](double f) { this->UpdateProgress(0.95 * f); };
   cmp::MissingLandmarkReport report;
   if (cmp::Status s = cmp::placeMissingLandmarks(surfaces, landmarks, options, &report); !s.ok())
@@ -131,4 +132,5 @@ void vtkCMPMissingLandmarkPlacer::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "BaseDomainModel: " << this->BaseDomainModel << "\n";
   os << indent << "Level: " << this->Level << "\n";
+  os << indent << "MaximumSources: " << this->MaximumSources << "\n";
 }

@@ -58,6 +58,14 @@ public:
   vtkSetMacro(Level, int);
   /// \brief Level of the remesh the features are carried through.
   vtkGetMacro(Level, int);
+  /// \brief The most models a missing feature is carried from, the likest
+  ///        to its model by the shape of their common landmarks (default 8;
+  ///        0: every model that has it). Bounds the work in a large
+  ///        collection: each set of missing features maps its models and
+  ///        their sources.
+  vtkSetMacro(MaximumSources, int);
+  /// \brief The most models a missing feature is carried from (0: all).
+  vtkGetMacro(MaximumSources, int);
 
 protected:
   vtkCMPMissingLandmarkPlacer() = default;
@@ -72,4 +80,5 @@ private:
   void operator=(const vtkCMPMissingLandmarkPlacer&) = delete;
   int BaseDomainModel = -1;
   int Level = 4;
+  int MaximumSources = 8;
 };

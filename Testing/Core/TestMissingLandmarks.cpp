@@ -98,6 +98,13 @@ TEST(MissingLandmarks, RefusesWhatCannotBePlaced)
   expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "no model has every feature");
   landmarks = { { kMissingLandmark, 1, kMissingLandmark, 3, 4 }, { 0, 1, 2, 3, 4 } };
   expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "a model has only 3 features");
+  MissingLandmarkOptions negative;
+  negative.maximumSources = -1;
+  landmarks = { gap, full };
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks, negative), "the most sources must be 0");
+  negative = MissingLandmarkOptions();
+  negative.similarityWidth = -0.1;
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks, negative), "the similarity width must be 0");
   landmarks = { full, { 0, 1 } };
   expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "model 1 has 2 features but model 0 has 6");
   landmarks = { full, { 0, 1, 2, 3, 4, 99 } };
@@ -114,8 +121,9 @@ TEST(MissingLandmarks, TheBaseDomainBuilderRefusesAModelThatMissesOne)
   expectError(buildBaseDomain(model.data.mesh, landmarks, domain), "landmark 4 is missing");
 }
 
-// Identical models carry a feature exactly, whatever the number of threads.
-TEST(MissingLandmarks, IdenticalModelsGiveTheTrueVertexWithAnyThreadCount)
+// Identical models carry a feature exactly, whatever the number of threads
+// and of sources.
+TEST(MissingLandmarks, IdenticalModelsGiveTheTrueVertexWithAnyThreadsAndSources)
 {
   const TriangleMesh mesh = test::bumpySphere(3);
   LandmarkList truth;
@@ -138,5 +146,18 @@ TEST(MissingLandmarks, IdenticalModelsGiveTheTrueVertexWithAnyThreadCount)
     EXPECT_EQ(report.placed[0].model, 1);
     EXPECT_EQ(report.placed[0].sources, 1); // model 2 misses another feature
     EXPECT_LT(report.placed[0].spread, 0.01); // the remesh lies within a chord of the surface
+  }
+  // MaximumSources bounds the models a feature is carried from.
+  for (int sources : { 0, 1, 2 })
+  {
+    std::vector<LandmarkList> landmarks = { truth, truth, truth, truth };
+    landmarks[0][3] = kMissingLandmark;
+    MissingLandmarkOptions options;
+    options.maximumSources = sources;
+    MissingLandmarkReport report;
+    ASSERT_TRUE(placeMissingLandmarks({ &mesh, &mesh, &mesh, &mesh }, landmarks, options, &report).ok());
+    ASSERT_EQ(report.placed.size(), 1u);
+    EXPECT_EQ(report.placed[0].sources, sources == 0 ? 3 : sources);
+    EXPECT_EQ(landmarks[0], truth);
   }
 }

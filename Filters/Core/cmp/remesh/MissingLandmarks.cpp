@@ -140,6 +140,36 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
       list.push_back(landmarks[m][f]);
     return list;
   };
+  // With many models, only the sources likest to a target (by their kept
+  // landmarks' shape) are mapped: the likest weigh most anyway.
+  if (options.maximumSources > 0)
+  {
+    auto positions = [&](int m) {
+      std::vector<Vec3> points;
+      for (int f : keptFeatures)
+        points.push_back(surfaces[m]->points[landmarks[m][f]]);
+      return points;
+    };
+    std::vector<char> keep(modelCount, 0);
+    for (int target : members)
+    {
+      if (setOf[target] != set)
+        continue;
+      keep[target] = 1;
+      std::vector<std::pair<double, int>> ranked;
+      for (int c : members)
+        if (setOf[c] != set)
+          ranked.emplace_back(shapeDistance(positions(c), positions(target)), c);
+      std::sort(ranked.begin(), ranked.end());
+      for (std::size_t k = 0; k < ranked.size() && k < static_cast<std::size_t>(options.maximumSources); ++k)
+        keep[ranked[k].second] = 1;
+    }
+    std::vector<int> chosen;
+    for (int m : members)
+      if (keep[m])
+        chosen.push_back(m);
+    members = chosen;
+  }
   BaseDomain domain;
   if (Status s = buildBaseDomain(*surfaces[source], reduced(source), domain); !s.ok())
     return Status::error("the base domain without the missing features: " + s.message());
@@ -303,6 +333,8 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
     return Status::error("sample relaxation rounds must not be negative");
   if (!std::isfinite(options.similarityWidth) || options.similarityWidth < 0.0)
     return Status::error("the similarity width must be 0 or positive");
+  if (options.maximumSources < 0)
+    return Status::error("the most sources must be 0 (every model) or positive");
   if (modelCount == 0)
     return {};
   const int featureCount = static_cast<int>(landmarks[0].size());

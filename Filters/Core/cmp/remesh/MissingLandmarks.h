@@ -38,6 +38,14 @@ struct MissingLandmarkOptions
   ///        alike models' maps agree best (Documentation/filters/
   ///        MissingLandmarkPlacer.md, "Measured").
   double similarityWidth = 0.1;
+  /// \brief The most models each target is carried from (0: every model
+  ///        that has the features): the likest to it by the shape of the
+  ///        landmarks both have (similarity fit). Each set of missing
+  ///        features maps its targets and their sources, so this bounds the
+  ///        cost in a large collection; with up to 8 sources it changes
+  ///        nothing, and 3 or 5 placed about as well as 7 (Documentation/
+  ///        filters/MissingLandmarkPlacer.md, "Measured").
+  int maximumSources = 8;
   /// \brief How each model of the reduced collection is straightened and
   ///        mapped (the defaults: curves freed).
   StraightenOptions straighten;
