@@ -8,7 +8,10 @@ raises StageError."""
 import os
 import time
 
-from vtkmodules.vtkCommonCore import vtkIntArray
+import numpy
+
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import VTK_INT, vtkIntArray
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 from vtkmodules.vtkFiltersTexture import vtkTextureMapToCylinder
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -96,7 +99,7 @@ def missing_features(surface):
     ids = surface.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY)
     if count is None or ids is None:
         return []
-    present = {int(ids.GetTuple1(v)) for v in range(ids.GetNumberOfTuples())}
+    present = set(numpy.unique(vtk_to_numpy(ids)).tolist())
     return [f for f in range(int(count.GetTuple1(0))) if f not in present]
 
 
@@ -122,12 +125,11 @@ def place_missing_landmarks(models, base_domain_model):
         features = surface.GetFieldData().GetArray(array_names.PLACED_FEATURES_ARRAY)
         spread_of = {int(features.GetTuple1(i)): spreads.GetTuple1(i) for i in range(features.GetNumberOfTuples())}
         entries = []
-        for vertex in range(marks.GetNumberOfTuples()):
+        for vertex in numpy.flatnonzero(vtk_to_numpy(marks) >= 0).tolist():
             feature = int(marks.GetTuple1(vertex))
-            if feature >= 0:
-                entries.append({"feature": feature, "vertex": vertex,
-                                "position": [significant(x) for x in surface.GetPoint(vertex)],
-                                "spread_per_sqrt_area": significant(spread_of[feature])})
+            entries.append({"feature": feature, "vertex": vertex,
+                            "position": [significant(x) for x in surface.GetPoint(vertex)],
+                            "spread_per_sqrt_area": significant(spread_of[feature])})
         entries.sort(key=lambda entry: entry["feature"])
         left = [f for f in model.missing if f not in {entry["feature"] for entry in entries}]
         results.append((entries, "feature%s %s could not be placed" % ("" if len(left) == 1 else "s",
@@ -139,13 +141,10 @@ def mark_placed_landmarks(remesh, placed):
     """Adds the point array PlacedFeatureId to a remesh: f at the vertex of
     each placed feature f (its FeatureId), -1 elsewhere, so that the
     landmarks the collection placed show in ParaView."""
-    ids = remesh.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY)
-    marks = vtkIntArray()
+    ids = vtk_to_numpy(remesh.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY))
+    values = numpy.where(numpy.isin(ids, list(placed)), ids, -1).astype(numpy.int32)
+    marks = numpy_to_vtk(values, deep=True, array_type=VTK_INT)
     marks.SetName(array_names.PLACED_FEATURE_ID_ARRAY)
-    marks.SetNumberOfValues(remesh.GetNumberOfPoints())
-    for vertex in range(remesh.GetNumberOfPoints()):
-        feature = int(ids.GetTuple1(vertex))
-        marks.SetValue(vertex, feature if feature in placed else -1)
     remesh.GetPointData().AddArray(marks)
 
 
