@@ -117,6 +117,21 @@ TEST(MeshFile, ReportsBadOBJ)
   EXPECT_NE(s.message().find(":2: face refers to a vertex that is not defined"), std::string::npos) << s.message();
   s = readOBJ(writeTempFile("none.obj", "this is not a mesh\n"), data);
   EXPECT_NE(s.message().find("no 'v' or 'f' records"), std::string::npos) << s.message();
+  // Texture coordinates and normals a face refers to must be defined, also
+  // counted from the end; "v//vn" has none (VTK's OBJ reader reads out of
+  // bounds otherwise).
+  const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
+  s = readOBJ(writeTempFile("normal.obj", points + "f 1/1/1 2/1/99999999999 3/1/1\n"), data);
+  EXPECT_NE(s.message().find(":6: face refers to a normal not defined"), std::string::npos) << s.message();
+  s = readOBJ(writeTempFile("normal-back.obj", points + "f 1//-2 2//1 3//1\n"), data);
+  EXPECT_NE(s.message().find(":6: face refers to a normal not defined"), std::string::npos) << s.message();
+  s = readOBJ(writeTempFile("texture-back.obj", points + "f 1/-5 2/1 3/1\n"), data);
+  EXPECT_NE(s.message().find(":6: face refers to a texture coordinate not defined"), std::string::npos) << s.message();
+  s = readOBJ(writeTempFile("texture-zero.obj", points + "f 1/0 2/1 3/1\n"), data);
+  EXPECT_NE(s.message().find(":6: face refers to a texture coordinate not defined"), std::string::npos) << s.message();
+  s = readOBJ(writeTempFile("line.obj", points + "f 1 2 3\nl 1 7\n"), data);
+  EXPECT_NE(s.message().find(":7: 'l' record refers to a vertex that is not defined"), std::string::npos) << s.message();
+  EXPECT_TRUE(readOBJ(writeTempFile("good.obj", points + "f 1/1/1 2/-1/-1 3//1\nl 1 2/1\np -1\n"), data).ok());
 }
 
 TEST(MeshFile, WeldsDuplicatedPointsAndKeepsTheFileToMeshMap)

@@ -324,3 +324,18 @@ TEST(PlyFile, RefusesEveryTruncationAndSurvivesDamageOfABinaryFile)
   EXPECT_GT(accepted, 0) << "some damage only changes coordinates";
   EXPECT_LT(accepted, 300) << "some damage breaks the header or the indices";
 }
+
+TEST(PlyFile, MessagesQuotingDamagedBytesAreValidText)
+{
+  // A face's list count with bytes that are not text: the message quotes the
+  // word with those bytes escaped, so Python and ParaView can show it.
+  const std::string text = std::string(kTetraHeader) + kTetraPoints + "3 0 1 2\n3H\xad\xce 0 1 3\n3 0 2 3\n3 1 2 3\n";
+  MeshFileData data;
+  const Status s = readPLYText("binary-word.ply", text, data);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("'3H\\xAD\\xCE'"), std::string::npos) << s.message();
+  // Valid UTF-8 (a file name with an accent) and newlines are kept.
+  EXPECT_EQ(Status::error("caf\xc3\xa9.ply:\tline 2\n").message(), "caf\xc3\xa9.ply:\tline 2\n");
+  EXPECT_EQ(Status::error("\x01\xff\xc3").message(), "\\x01\\xFF\\xC3");
+  EXPECT_EQ(Status::error("\xed\xa0\x80").message(), "\\xED\\xA0\\x80") << "a surrogate is not text";
+}

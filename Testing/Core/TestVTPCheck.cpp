@@ -109,6 +109,26 @@ TEST(VTPCheck, RefusesAnUnknownArrayType)
     << message;
 }
 
+TEST(VTPCheck, RefusesComponentCountsVTKCannotRead)
+{
+  // A connectivity array with 2^32 - 1 components: VTK 9.2 spins on it.
+  std::string text = polyData("", kAsciiPoints);
+  const std::string connectivity = "Name=\"connectivity\" format";
+  text.replace(text.find(connectivity), connectivity.size(),
+    "Name=\"connectivity\" NumberOfComponents=\"4294967295\" format");
+  std::string message = check("components.vtp", text);
+  EXPECT_NE(message.find("components.vtp:13: DataArray 'connectivity': NumberOfComponents '4294967295' is larger "
+                         "than VTK reads"),
+    std::string::npos)
+    << message;
+  text = polyData("", kAsciiPoints);
+  text.replace(text.find(connectivity), connectivity.size(), "Name=\"connectivity\" NumberOfComponents=\"3\" format");
+  message = check("cell-components.vtp", text);
+  EXPECT_NE(message.find("DataArray 'connectivity': NumberOfComponents is 3, but a cell array has 1"),
+    std::string::npos)
+    << message;
+}
+
 TEST(VTPCheck, RefusesAStringArrayClaimingMoreTuplesThanItHolds)
 {
   // 2^31 tuples: VTK 9.2 allocates them and aborts with bad_alloc.

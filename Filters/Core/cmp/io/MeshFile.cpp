@@ -206,6 +206,7 @@ Status readOBJ(const std::string& path, MeshFileData& out)
   bool everyCornerHasTex = true;
   std::vector<int> polygon, polygonTex;
   std::vector<Triangle> texTriangles;
+  long normalCount = 0;
   double values[3];
   while (lines.next(line, true))
   {
@@ -225,6 +226,38 @@ Status readOBJ(const std::string& path, MeshFileData& out)
         return Status::error(fileLine(path, lines.number()) + "a 'vt' record needs texture coordinates");
       texCoords.emplace_back(values[0], values[1]);
     }
+    else if (keyword == "vn")
+      ++normalCount;
+    else if (keyword == "l" || keyword == "p")
+    {
+      // Lines and points are not kept, but one referring to a vertex that
+      // is not defined is a damaged file (VTK's OBJ reader reads out of
+      // bounds).
+      const char* p = rest.c_str();
+      const long pointCount = static_cast<long>(out.mesh.points.size());
+      const long texCount = static_cast<long>(texCoords.size());
+      while (true)
+      {
+        char* end = nullptr;
+        long v = std::strtol(p, &end, 10);
+        if (end == p)
+          break;
+        p = end;
+        v = v < 0 ? pointCount + v : v - 1;
+        if (v < 0 || v >= pointCount)
+          return Status::error(fileLine(path, lines.number()) + "'" + keyword + "' record refers to a vertex that is not defined");
+        if (*p == '/')
+        {
+          ++p;
+          long vt = std::strtol(p, &end, 10);
+          const bool hasTex = end != p;
+          p = end;
+          vt = vt < 0 ? texCount + vt : vt - 1;
+          if (hasTex && (vt < 0 || vt >= texCount))
+            return Status::error(fileLine(path, lines.number()) + "'" + keyword + "' record refers to a texture coordinate not defined");
+        }
+      }
+    }
     else if (keyword == "f")
     {
       polygon.clear();
@@ -236,17 +269,20 @@ Status readOBJ(const std::string& path, MeshFileData& out)
         long v = std::strtol(p, &end, 10);
         if (end == p)
           break;
-        long vt = 0;
+        long vt = 0, vn = 0;
+        bool hasTex = false, hasNormal = false;
         p = end;
         if (*p == '/')
         {
           ++p;
-          vt = std::strtol(p, &end, 10); // 0 when empty ("v//vn")
+          vt = std::strtol(p, &end, 10); // none when empty ("v//vn")
+          hasTex = end != p;
           p = end;
           if (*p == '/')
           {
             ++p;
-            std::strtol(p, &end, 10);
+            vn = std::strtol(p, &end, 10);
+            hasNormal = end != p;
             p = end;
           }
         }
@@ -255,9 +291,14 @@ Status readOBJ(const std::string& path, MeshFileData& out)
         if (v < 0 || v >= pointCount)
           return Status::error(fileLine(path, lines.number()) + "face refers to a vertex that is not defined");
         const long texCount = static_cast<long>(texCoords.size());
-        vt = vt < 0 ? texCount + vt : vt - 1;
-        if (vt >= texCount)
+        vt = !hasTex ? -1 : vt < 0 ? texCount + vt : vt - 1;
+        if (vt >= texCount || (hasTex && vt < 0))
           return Status::error(fileLine(path, lines.number()) + "face refers to a texture coordinate not defined");
+        // Normals are not kept, but a face referring to one that is not
+        // defined is a damaged file (VTK's OBJ reader reads out of bounds).
+        vn = vn < 0 ? normalCount + vn : vn - 1;
+        if (hasNormal && (vn < 0 || vn >= normalCount))
+          return Status::error(fileLine(path, lines.number()) + "face refers to a normal not defined");
         polygon.push_back(static_cast<int>(v));
         polygonTex.push_back(static_cast<int>(vt));
       }

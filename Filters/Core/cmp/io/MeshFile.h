@@ -62,8 +62,10 @@ Status readOFF(const std::string& path, MeshFileData& out);
 /// OBJ has no counts: memory grows with the records actually read. Fails
 /// (Status), naming the file and line, on a missing, unreadable or binary
 /// file, a `v` or `vt` record without its coordinates, a face with fewer
-/// than three vertices or referring to a vertex or texture coordinate not
-/// defined, and a file with no `v` or `f` record.
+/// than three vertices or referring to a vertex, texture coordinate or
+/// normal (`vn`) not defined, an `l` or `p` record (not kept) referring to
+/// a vertex or texture coordinate not defined, and a file with no `v` or
+/// `f` record.
 Status readOBJ(const std::string& path, MeshFileData& out);
 
 /// \brief Reads a PLY file: ASCII, binary little or big endian, version 1.0.

@@ -567,6 +567,12 @@ Status VTPChecker::checkArray(const Tag& tag, const std::string& parent, const s
   {
     if (!parseCount(it->second, components) || components == 0)
       return Status::error(what + ": NumberOfComponents '" + it->second + "' is not a positive integer");
+    // VTK reads it as an int; a cell array's connectivity and offsets have
+    // one (VTK 9.2 spins on a huge count there).
+    if (components > 2147483647)
+      return Status::error(what + ": NumberOfComponents '" + it->second + "' is larger than VTK reads (2147483647)");
+    if ((parent == "Verts" || parent == "Lines" || parent == "Strips" || parent == "Polys") && components != 1)
+      return Status::error(what + ": NumberOfComponents is " + it->second + ", but a cell array has 1");
   }
   // The tuples VTK may allocate: the array's own count and the piece's.
   Count tuples = 0;

@@ -29,7 +29,8 @@ using VTPDecompressor = std::function<bool(const std::string& compressor, const 
 ///   `header_type` (UInt32, UInt64) and `compressor`;
 /// - every `Piece` count (`NumberOfPoints`, `NumberOfPolys`, ...) and every
 ///   array's (`DataArray`, and `Array` for strings) `NumberOfTuples` and
-///   `NumberOfComponents` is an integer;
+///   `NumberOfComponents` is an integer (components at most 2^31 - 1, and
+///   1 in a cell array's connectivity and offsets);
 /// - every array has a type VTK knows (Int8 ... UInt64, Float32,
 ///   Float64, String, Bit) and a format (ascii, binary, appended);
 /// - the values an array must hold (its `NumberOfTuples`, or the piece's
