@@ -124,14 +124,23 @@ std::uint64_t edgeKey(int a, int b)
 }
 
 /// Distance of the samples of one mesh to another: the largest, the sum
-/// of those in each triangle.
+/// of those in each triangle. With a limit, also where samples lie farther
+/// than it: the triangles of `from` holding such a sample, and the
+/// triangles of `to` nearest to one.
 class SampleDistances
 {
 public:
-  SampleDistances(const TriangleMesh& from, const ClosestPointQuery& to, int steps)
+  /// `farFrom` (per triangle of `from`) and `nearestToFar` (per triangle of
+  /// `to`), when given, get 1 where a sample farther than `limit` lies, or
+  /// is nearest; `farFrom` is filled by `triangleSum()`.
+  SampleDistances(const TriangleMesh& from, const ClosestPointQuery& to, int steps, double limit = infinity,
+    std::vector<char>* farFrom = nullptr, std::vector<char>* nearestToFar = nullptr)
     : from_(from)
     , to_(to)
     , steps_(steps)
+    , limit_(limit)
+    , farFrom_(farFrom)
+    , nearestToFar_(nearestToFar)
   {
     measureVertices();
     measureEdges();
@@ -141,17 +150,25 @@ public:
   double triangleSum(int t)
   {
     const Triangle& tri = from_.triangles[t];
-    double sum = 0.0;
+    double sum = 0.0, most = 0.0;
     for (int k = 0; k < 3; ++k)
     {
       sum += vertexDistance_[tri[k]];
+      most = std::max(most, vertexDistance_[tri[k]]);
       const auto edge = std::lower_bound(edges_.begin(), edges_.end(), edgeKey(tri[k], tri[(k + 1) % 3]));
       sum += edgeSum_[edge - edges_.begin()];
+      most = std::max(most, edgeMost_[edge - edges_.begin()]);
     }
     const auto x = corners(from_, t);
     for (int i = 1; i < steps_; ++i)
       for (int j = 1; i + j < steps_; ++j)
-        sum += measure((i * x[0] + j * x[1] + (steps_ - i - j) * x[2]) / steps_);
+      {
+        const double d = measure((i * x[0] + j * x[1] + (steps_ - i - j) * x[2]) / steps_);
+        sum += d;
+        most = std::max(most, d);
+      }
+    if (farFrom_ && most > limit_)
+      (*farFrom_)[t] = 1;
     return sum;
   }
 
@@ -163,12 +180,15 @@ public:
 private:
   double measure(const Vec3& p)
   {
-    const double d = to_.closest(p).distance;
+    const ClosestPointQuery::Result nearest = to_.closest(p);
+    const double d = nearest.distance;
     if (d > largest_)
     {
       largest_ = d;
       farthest_ = p;
     }
+    if (nearestToFar_ && d > limit_ && nearest.at.triangle >= 0)
+      (*nearestToFar_)[nearest.at.triangle] = 1;
     return d;
   }
 
@@ -196,23 +216,32 @@ private:
     std::sort(edges_.begin(), edges_.end());
     edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
     edgeSum_.assign(edges_.size(), 0.0);
+    edgeMost_.assign(edges_.size(), 0.0);
     for (std::size_t e = 0; e < edges_.size(); ++e)
     {
       const Vec3& a = from_.points[edges_[e] >> 32];
       const Vec3& b = from_.points[edges_[e] & 0xffffffffu];
       for (int i = 1; i < steps_; ++i)
-        edgeSum_[e] += measure(((steps_ - i) * a + i * b) / steps_);
+      {
+        const double d = measure(((steps_ - i) * a + i * b) / steps_);
+        edgeSum_[e] += d;
+        edgeMost_[e] = std::max(edgeMost_[e], d);
+      }
     }
   }
 
   const TriangleMesh& from_;
   const ClosestPointQuery& to_;
   const int steps_;
+  const double limit_;
+  std::vector<char>* farFrom_;
+  std::vector<char>* nearestToFar_;
   double largest_ = -infinity; // so that the first sample is the farthest so far
   Vec3 farthest_ = Vec3::Zero();
   std::vector<double> vertexDistance_;
   std::vector<std::uint64_t> edges_; ///< Sorted undirected edges.
   std::vector<double> edgeSum_;      ///< Sum over each edge's inner points.
+  std::vector<double> edgeMost_;     ///< Largest over each edge's inner points.
 };
 
 /// The largest and the area-weighted mean sample distance from `from` to
@@ -224,14 +253,15 @@ struct OneSided
   Vec3 farthest = Vec3::Zero();
 };
 
-OneSided oneSidedDistance(const TriangleMesh& from, const TriangleMesh& to, int steps)
+OneSided oneSidedDistance(const TriangleMesh& from, const TriangleMesh& to, int steps, double limit = infinity,
+  std::vector<char>* farFrom = nullptr, std::vector<char>* nearestToFar = nullptr)
 {
   if (from.triangles.empty())
     return {};
   if (to.triangles.empty()) // nothing to be close to; avoids 0 * inf below
     return { infinity, infinity, from.points[from.triangles[0][0]] };
   const ClosestPointQuery query(to);
-  SampleDistances samples(from, query, steps);
+  SampleDistances samples(from, query, steps, limit, farFrom, nearestToFar);
   const double perTriangle = (steps + 1) * (steps + 2) / 2.0;
   double weighted = 0.0, area = 0.0, plain = 0.0;
   for (int t = 0; t < from.triangleCount(); ++t)
@@ -378,37 +408,27 @@ ClosestPointQuery::Result ClosestPointQuery::closest(const Vec3& p) const
 std::vector<char> trianglesFartherThan(
   const TriangleMesh& surface, const TriangleMesh& remesh, double limit, int subdivisions)
 {
-  std::vector<char> far(remesh.triangles.size(), 0);
-  if (surface.triangles.empty() || remesh.triangles.empty())
-    return far;
-  const int steps = std::max(1, subdivisions);
-  // Calls visit(p) for every point of triangle t's barycentric grid.
-  const auto forGrid = [steps](const TriangleMesh& mesh, int t, const auto& visit) {
-    const auto x = corners(mesh, t);
-    for (int i = 0; i <= steps; ++i)
-      for (int j = 0; i + j <= steps; ++j)
-        visit((i * x[0] + j * x[1] + (steps - i - j) * x[2]) / steps);
-  };
-  const ClosestPointQuery toSurface(surface);
-  for (int t = 0; t < remesh.triangleCount(); ++t)
-    forGrid(remesh, t, [&](const Vec3& p) {
-      if (!far[t] && toSurface.closest(p).distance > limit)
-        far[t] = 1;
-    });
-  const ClosestPointQuery toRemesh(remesh);
-  for (int t = 0; t < surface.triangleCount(); ++t)
-    forGrid(surface, t, [&](const Vec3& p) {
-      const ClosestPointQuery::Result nearest = toRemesh.closest(p);
-      if (nearest.distance > limit && nearest.at.triangle >= 0)
-        far[nearest.at.triangle] = 1;
-    });
+  std::vector<char> far;
+  surfaceDistance(surface, remesh, subdivisions, limit, &far);
   return far;
 }
 
 SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, int subdivisions)
 {
+  return surfaceDistance(a, b, subdivisions, infinity, nullptr);
+}
+
+SurfaceDistance surfaceDistance(
+  const TriangleMesh& a, const TriangleMesh& b, int subdivisions, double limit, std::vector<char>* farOfB)
+{
   const int steps = std::max(1, subdivisions);
-  const OneSided ab = oneSidedDistance(a, b, steps), ba = oneSidedDistance(b, a, steps);
+  if (farOfB)
+    farOfB->assign(b.triangles.size(), 0);
+  // Marking needs both meshes to have triangles (a's samples are then near
+  // some triangle of b, and b's samples are measured against a).
+  std::vector<char>* marks = farOfB && !a.triangles.empty() && !b.triangles.empty() ? farOfB : nullptr;
+  const OneSided ab = oneSidedDistance(a, b, steps, limit, nullptr, marks);
+  const OneSided ba = oneSidedDistance(b, a, steps, limit, marks, nullptr);
   SurfaceDistance result;
   result.aToB = ab.largest;
   result.meanAToB = ab.mean;

@@ -98,6 +98,16 @@ struct SurfaceDistance
 /// a mesh without triangles are infinite.
 SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, int subdivisions = 3);
 
+/// \brief `surfaceDistance(a, b, subdivisions)` and, in the same sampling,
+///        `farOfB` = `trianglesFartherThan(a, b, limit, subdivisions)`: the
+///        triangles of `b` where `b` misses `a` by more than `limit` (each
+///        sample is measured once, where the two calls would measure the
+///        two meshes twice; an edge's points are computed along the edge, so
+///        a sample within rounding of `limit` may come out on the other side).
+/// \pre Finite coordinates (`checkSurface()`).
+SurfaceDistance surfaceDistance(
+  const TriangleMesh& a, const TriangleMesh& b, int subdivisions, double limit, std::vector<char>* farOfB);
+
 /// \brief Where `remesh` misses `surface` by more than `limit`: per triangle
 ///        of `remesh`, 1 if a sample of it lies farther than `limit` from
 ///        `surface`, or if it is the triangle of `remesh` nearest to a

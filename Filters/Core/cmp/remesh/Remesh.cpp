@@ -49,12 +49,14 @@ int nearestLandmark(const TracedNet& net, const Vec3& point, double& distance)
 }
 
 /// Sampled both ways: input to remesh catches features the remesh cuts
-/// off, remesh to input catches triangles spanning concave regions.
-void measureDistance(
-  const BaseDomain& domain, const RemeshModel& model, const TriangleMesh& placed, RemeshModelReport& figures)
+/// off, remesh to input catches triangles spanning concave regions. With
+/// `far`, the same samples also mark the remesh triangles farther from the
+/// model than `limit`.
+void measureDistance(const BaseDomain& domain, const RemeshModel& model, const TriangleMesh& placed,
+  RemeshModelReport& figures, double limit = 0.0, std::vector<char>* far = nullptr)
 {
   const Clock::time_point start = Clock::now();
-  const SurfaceDistance distance = surfaceDistance(*model.surface, placed);
+  const SurfaceDistance distance = surfaceDistance(*model.surface, placed, 3, limit, far);
   const double diagonal = boundingBoxDiagonal(*model.surface);
   figures.distanceMeasured = true;
   figures.hausdorffDistance = distance.hausdorff();
@@ -107,11 +109,10 @@ Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const s
   figures.meanShapeQuality = shape.meanShapeQuality;
   placed.foldsNearFeature =
     foldsNearLandmarks(nearestLandmarks, static_cast<int>(domain.featureIds.size()), placed.folded);
-  if (options.computeDistance)
-    measureDistance(domain, model, inSpace, figures);
-  if (far)
-    *far = trianglesFartherThan(
-      *model.surface, inSpace, options.adaptiveTolerance * boundingBoxDiagonal(*model.surface));
+  // An adaptive pass's far triangles come from the distance's own samples.
+  if (options.computeDistance || far)
+    measureDistance(domain, model, inSpace, figures,
+      options.adaptiveTolerance * boundingBoxDiagonal(*model.surface), far);
   figures.seconds = secondsSince(start);
   return {};
 }
