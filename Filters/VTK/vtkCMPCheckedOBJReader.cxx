@@ -18,23 +18,11 @@ int vtkCMPCheckedOBJReader::RequestData(
   {
     cmp::MeshFileData data;
     if (cmp::Status s = cmp::readOBJ(name, data); !s.ok())
-    {
-      if (output)
-        output->Initialize();
-      vtkErrorMacro(<< s.message());
-      return 0;
-    }
+      return cmp::bridge::refuse(this, output, s.message());
   }
   // VTK's own messages do not name the file: they are said again with it.
   int result = 0;
   const std::string said = cmp::bridge::readWithMessages(this, name ? name : "the input",
     [&] { return this->Superclass::RequestData(request, inputVector, outputVector); }, result);
-  if (!said.empty())
-  {
-    if (output)
-      output->Initialize();
-    vtkErrorMacro(<< said);
-    return 0;
-  }
-  return result;
+  return said.empty() ? result : cmp::bridge::refuse(this, output, said);
 }

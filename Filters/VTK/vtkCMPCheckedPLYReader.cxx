@@ -19,12 +19,7 @@ int vtkCMPCheckedPLYReader::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   cmp::MeshFileData data;
   if (cmp::Status s = cmp::readPLY(name, data); !s.ok())
-  {
-    if (output)
-      output->Initialize();
-    vtkErrorMacro(<< s.message());
-    return 0;
-  }
+    return cmp::bridge::refuse(this, output, s.message());
   // VTK's own PLY parser is never given the file (it aborts on files the
   // core reads, for example an ASCII file without a last newline or damaged
   // binary lists): the points, the faces as triangles and the attributes

@@ -13,26 +13,15 @@ int vtkCMPCheckedSTLReader::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   const char* name = this->GetFileName();
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (name && *name)
   {
     if (cmp::Status s = cmp::checkSTLFile(name); !s.ok())
-    {
-      if (vtkPolyData* output = vtkPolyData::GetData(outputVector))
-        output->Initialize();
-      vtkErrorMacro(<< s.message());
-      return 0;
-    }
+      return cmp::bridge::refuse(this, output, s.message());
   }
   // VTK's own messages do not name the file: they are said again with it.
   int result = 0;
   const std::string said = cmp::bridge::readWithMessages(this, name ? name : "the input",
     [&] { return this->Superclass::RequestData(request, inputVector, outputVector); }, result);
-  if (!said.empty())
-  {
-    if (vtkPolyData* output = vtkPolyData::GetData(outputVector))
-      output->Initialize();
-    vtkErrorMacro(<< said);
-    return 0;
-  }
-  return result;
+  return said.empty() ? result : cmp::bridge::refuse(this, output, said);
 }

@@ -40,10 +40,7 @@ int vtkCMPCheckedXMLPolyDataReader::ReadXMLInformation()
       this->CheckFailure = s.ok() ? std::string() : s.message();
     }
     if (!this->CheckFailure.empty())
-    {
-      vtkErrorMacro(<< this->CheckFailure);
-      return 0;
-    }
+      return cmp::bridge::refuse(this, nullptr, this->CheckFailure);
   }
   return this->Superclass::ReadXMLInformation();
 }
@@ -52,38 +49,24 @@ int vtkCMPCheckedXMLPolyDataReader::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const char* file = this->GetFileName();
+  const std::string path = file ? file : "the input";
   // VTK's RequestData runs even when the information could not be read, and
   // then reads past its parser: a refused file stops here, and says why to
   // whoever asked for the data.
-  const char* file = this->GetFileName();
   if (!this->GetReadFromInputString() && file && *file && !this->CheckFailure.empty() && this->CheckedFile == file)
-  {
-    if (output)
-      output->Initialize();
-    vtkErrorMacro(<< this->CheckFailure);
-    return 0;
-  }
+    return cmp::bridge::refuse(this, output, this->CheckFailure);
   // VTK's own messages (a damaged array, say) do not name the file: they are
   // said again with it.
   int result = 0;
-  const std::string said = cmp::bridge::readWithMessages(this, file ? file : "the input",
-    [&] { return this->Superclass::RequestData(request, inputVector, outputVector); }, result);
+  const std::string said = cmp::bridge::readWithMessages(
+    this, path, [&] { return this->Superclass::RequestData(request, inputVector, outputVector); }, result);
   if (!said.empty())
-  {
-    if (output)
-      output->Initialize();
-    vtkErrorMacro(<< said);
-    return 0;
-  }
+    return cmp::bridge::refuse(this, output, said);
   if (output)
   {
-    const char* name = this->GetFileName();
-    if (cmp::Status s = cmp::bridge::checkCellPointIds(output, name ? name : "the input"); !s.ok())
-    {
-      output->Initialize();
-      vtkErrorMacro(<< s.message());
-      return 0;
-    }
+    if (cmp::Status s = cmp::bridge::checkCellPointIds(output, path); !s.ok())
+      return cmp::bridge::refuse(this, output, s.message());
   }
   return result;
 }

@@ -80,6 +80,14 @@ bool decompressWithVTK(const std::string& compressor, const unsigned char* compr
 
 } // namespace
 
+int refuse(vtkObject* reader, vtkPolyData* output, const std::string& message)
+{
+  if (output)
+    output->Initialize();
+  vtkErrorWithObjectMacro(reader, << message);
+  return 0;
+}
+
 std::string readWithMessages(vtkObject* reader, const std::string& path, const std::function<int()>& read, int& result)
 {
   std::string said;

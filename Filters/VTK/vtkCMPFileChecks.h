@@ -47,6 +47,11 @@ private:
   unsigned long tag_;
 };
 
+/// \brief Refuses a file: empties `output` (if any), reports `message`
+///        with `vtkErrorWithObjectMacro` on `reader`, and returns 0, what
+///        the reader's `RequestData` then returns.
+int refuse(vtkObject* reader, vtkPolyData* output, const std::string& message);
+
 /// \brief Runs `read` (a VTK reader's own reading, on `reader`) and
 ///        returns what it said as one line naming `path`: its last error
 ///        message, made valid text (`Status`), or, if it failed silently,
