@@ -39,6 +39,58 @@ void identityPointMap(MeshFileData& out)
   std::iota(out.fileToMeshPoint.begin(), out.fileToMeshPoint.end(), 0);
 }
 
+/// One vertex reference of an OBJ record: `v`, `v/vt` and, where normals
+/// may follow, `v/vt/vn` or `v//vn`, resolved to 0-based indices (1-based
+/// in the file, or counted back from the end when negative).
+struct ObjReference
+{
+  long vertex = -1;
+  long texture = -1; ///< -1 when the reference has none.
+};
+
+/// Reads the reference at `p` and moves `p` past it. Returns false at the
+/// end of the record. `problem` gets what it refers to that is not defined
+/// among the `points`, `textures` and `normals` defined so far ("a vertex",
+/// "a texture coordinate", "a normal"), and is empty otherwise.
+bool readObjReference(
+  const char*& p, long points, long textures, long normals, bool withNormal, ObjReference& out, std::string& problem)
+{
+  problem.clear();
+  char* end = nullptr;
+  const long v = std::strtol(p, &end, 10);
+  if (end == p)
+    return false;
+  p = end;
+  long vt = 0, vn = 0;
+  bool hasTex = false, hasNormal = false;
+  if (*p == '/')
+  {
+    ++p;
+    vt = std::strtol(p, &end, 10); // none when empty ("v//vn")
+    hasTex = end != p;
+    p = end;
+    if (withNormal && *p == '/')
+    {
+      ++p;
+      vn = std::strtol(p, &end, 10);
+      hasNormal = end != p;
+      p = end;
+    }
+  }
+  out.vertex = v < 0 ? points + v : v - 1;
+  out.texture = !hasTex ? -1 : vt < 0 ? textures + vt : vt - 1;
+  vn = vn < 0 ? normals + vn : vn - 1;
+  if (out.vertex < 0 || out.vertex >= points)
+    problem = "a vertex that is not defined";
+  else if (hasTex && (out.texture < 0 || out.texture >= textures))
+    problem = "a texture coordinate not defined";
+  // Normals are not kept, but a reference to one that is not defined is a
+  // damaged file (VTK's OBJ reader reads out of bounds).
+  else if (hasNormal && (vn < 0 || vn >= normals))
+    problem = "a normal not defined";
+  return true;
+}
+
 } // namespace
 
 std::string fileExtension(const std::string& path)
@@ -234,73 +286,27 @@ Status readOBJ(const std::string& path, MeshFileData& out)
       // is not defined is a damaged file (VTK's OBJ reader reads out of
       // bounds).
       const char* p = rest.c_str();
-      const long pointCount = static_cast<long>(out.mesh.points.size());
-      const long texCount = static_cast<long>(texCoords.size());
-      while (true)
-      {
-        char* end = nullptr;
-        long v = std::strtol(p, &end, 10);
-        if (end == p)
-          break;
-        p = end;
-        v = v < 0 ? pointCount + v : v - 1;
-        if (v < 0 || v >= pointCount)
-          return Status::error(fileLine(path, lines.number()) + "'" + keyword + "' record refers to a vertex that is not defined");
-        if (*p == '/')
-        {
-          ++p;
-          long vt = std::strtol(p, &end, 10);
-          const bool hasTex = end != p;
-          p = end;
-          vt = vt < 0 ? texCount + vt : vt - 1;
-          if (hasTex && (vt < 0 || vt >= texCount))
-            return Status::error(fileLine(path, lines.number()) + "'" + keyword + "' record refers to a texture coordinate not defined");
-        }
-      }
+      ObjReference reference;
+      std::string problem;
+      while (readObjReference(p, static_cast<long>(out.mesh.points.size()), static_cast<long>(texCoords.size()),
+        normalCount, false, reference, problem))
+        if (!problem.empty())
+          return Status::error(fileLine(path, lines.number()) + "'" + keyword + "' record refers to " + problem);
     }
     else if (keyword == "f")
     {
       polygon.clear();
       polygonTex.clear();
       const char* p = rest.c_str();
-      while (true)
+      ObjReference reference;
+      std::string problem;
+      while (readObjReference(p, static_cast<long>(out.mesh.points.size()), static_cast<long>(texCoords.size()),
+        normalCount, true, reference, problem))
       {
-        char* end = nullptr;
-        long v = std::strtol(p, &end, 10);
-        if (end == p)
-          break;
-        long vt = 0, vn = 0;
-        bool hasTex = false, hasNormal = false;
-        p = end;
-        if (*p == '/')
-        {
-          ++p;
-          vt = std::strtol(p, &end, 10); // none when empty ("v//vn")
-          hasTex = end != p;
-          p = end;
-          if (*p == '/')
-          {
-            ++p;
-            vn = std::strtol(p, &end, 10);
-            hasNormal = end != p;
-            p = end;
-          }
-        }
-        const long pointCount = static_cast<long>(out.mesh.points.size());
-        v = v < 0 ? pointCount + v : v - 1;
-        if (v < 0 || v >= pointCount)
-          return Status::error(fileLine(path, lines.number()) + "face refers to a vertex that is not defined");
-        const long texCount = static_cast<long>(texCoords.size());
-        vt = !hasTex ? -1 : vt < 0 ? texCount + vt : vt - 1;
-        if (vt >= texCount || (hasTex && vt < 0))
-          return Status::error(fileLine(path, lines.number()) + "face refers to a texture coordinate not defined");
-        // Normals are not kept, but a face referring to one that is not
-        // defined is a damaged file (VTK's OBJ reader reads out of bounds).
-        vn = vn < 0 ? normalCount + vn : vn - 1;
-        if (hasNormal && (vn < 0 || vn >= normalCount))
-          return Status::error(fileLine(path, lines.number()) + "face refers to a normal not defined");
-        polygon.push_back(static_cast<int>(v));
-        polygonTex.push_back(static_cast<int>(vt));
+        if (!problem.empty())
+          return Status::error(fileLine(path, lines.number()) + "face refers to " + problem);
+        polygon.push_back(static_cast<int>(reference.vertex));
+        polygonTex.push_back(static_cast<int>(reference.texture));
       }
       if (polygon.size() < 3)
         return Status::error(fileLine(path, lines.number()) + "a face needs at least three vertices");
