@@ -367,3 +367,309 @@ TEST(GlobalMap, WeighingTheEnergyNearLandmarksKeepsTheirRingsFromBeingPinched)
   EXPECT_LT(after.back(), 0.75 * before.back());
   EXPECT_LT(after[after.size() / 2], 0.75 * before[before.size() / 2]);
 }
+
+TEST(GlobalMap, FixedPatchesKeepTheirMapAndTheirCurves)
+{
+  // The patches round base vertex 0 (as a cap's round its centre) fixed:
+  // every vertex of their triangles keeps its start place (but those on a
+  // curve between a fixed and a free patch, which slide along it: see
+  // VerticesBetweenFixedAndFreePatchesSlideAlongTheirEdge), the rest of
+  // the map still moves and stays bijective, and the cut along the map
+  // leaves the curves of the fixed patches' edges as they are.
+  CMP_REQUIRE_SHARED_DATA();
+  const Straightened s = straightened("381", "381");
+  const int baseTriangles = s.domain.mesh.triangleCount();
+  std::vector<char> fixed(baseTriangles, 0);
+  for (int t = 0; t < baseTriangles; ++t)
+  {
+    const Triangle& tri = s.domain.mesh.triangles[t];
+    fixed[t] = std::find(tri.begin(), tri.end(), 0) != tri.end() ? 1 : 0;
+  }
+  ASSERT_GE(std::count(fixed.begin(), fixed.end(), 1), 3);
+  const EditableMesh& mesh = s.straight.net.mesh;
+  std::vector<char> inFixed(mesh.vertexCount(), 0);
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    if (fixed[s.straight.net.patchOfTriangle[t]])
+      for (int v : mesh.triangle(t))
+        inFixed[v] = 1;
+  for (std::size_t e = 0; e < s.straight.net.curves.size(); ++e)
+    if (fixed[s.straight.net.leftTriangle[e]] != fixed[s.straight.net.rightTriangle[e]])
+    {
+      const std::vector<int>& curve = s.straight.net.curves[e];
+      for (std::size_t i = 1; i + 1 < curve.size(); ++i)
+        inFixed[curve[i]] = 0; // slides
+    }
+  const auto movedInFixed = [&](const PatchParameterization& result) {
+    int moved = 0;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+    {
+      if (!inFixed[v])
+        continue;
+      bool same = result.baseTriangle[v] == s.map.baseTriangle[v];
+      for (int k = 0; k < 3 && same; ++k)
+        same = std::abs(result.baseCoordinates[v][k] - s.map.baseCoordinates[v][k]) <= 1e-12;
+      moved += same ? 0 : 1;
+    }
+    return moved;
+  };
+
+  GlobalMapOptions options;
+  options.maximumIterations = 10;
+  options.leastRelativeGain = 0.0;
+  PatchParameterization result;
+  ASSERT_TRUE(optimizeGlobalMap(s.straight.net, s.domain, s.map, result, options).ok());
+  EXPECT_GT(movedInFixed(result), 0); // left free, those patches' vertices move
+
+  options.fixedPatches = fixed;
+  GlobalMapReport report;
+  const Status status = optimizeGlobalMap(s.straight.net, s.domain, s.map, result, options, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_EQ(movedInFixed(result), 0);
+  EXPECT_EQ(report.iterations, 10);
+  EXPECT_TRUE(std::isfinite(report.maximumDistortion)); // no triangle flipped or crushed
+  EXPECT_LT(report.distortionAfter, report.distortionBefore);
+  EXPECT_GT(report.crossingVertices, 0); // the other curves are free
+
+  // Cut along the map: the fixed patches' curves are the straightened ones.
+  StraightenedNet cut;
+  PatchParameterization cutMap;
+  FreeCurvesReport freed;
+  ASSERT_TRUE(freeCurves(s.straight, s.domain, s.map, options, cut, cutMap, &freed).ok());
+  ASSERT_TRUE(freed.applied) << freed.reason;
+  for (const std::string& problem : validateLayout(toLabelledSurface(cut.net, s.domain), toBaseTriangles(s.domain)))
+    ADD_FAILURE() << problem;
+  EXPECT_EQ(cutMap.flippedTriangles, 0);
+  int fixedCurves = 0, movedCurves = 0;
+  for (std::size_t e = 0; e < s.straight.net.curves.size(); ++e)
+  {
+    if (fixed[s.straight.net.leftTriangle[e]] || fixed[s.straight.net.rightTriangle[e]])
+    {
+      ++fixedCurves;
+      EXPECT_EQ(cut.net.curves[e], s.straight.net.curves[e]) << "curve " << e;
+    }
+    else
+      movedCurves += cut.net.curves[e] != s.straight.net.curves[e] ? 1 : 0;
+  }
+  EXPECT_GT(fixedCurves, 0);
+  EXPECT_GT(movedCurves, 0);
+
+  // The report's figure leaves the fixed patches out: the mean distortion
+  // of the start map over the other patches' triangles, each base triangle
+  // drawn equilateral with their area over their count (the surface's own
+  // area: no inflation).
+  const auto startDistortion = [&](const std::vector<char>& fixedMask) {
+    double area = 0.0, energy = 0.0;
+    int freeCount = 0;
+    for (int t = 0; t < baseTriangles; ++t)
+      freeCount += fixedMask.empty() || !fixedMask[t] ? 1 : 0;
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      const double side = std::sqrt(4.0 * area / (std::sqrt(3.0) * freeCount));
+      const std::array<Eigen::Vector2d, 3> corner{ Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(side, 0.0),
+        Eigen::Vector2d(0.5 * side, 0.5 * std::sqrt(3.0) * side) };
+      for (int t = 0; t < mesh.triangleCount(); ++t)
+      {
+        const int patch = s.straight.net.patchOfTriangle[t];
+        if (!fixedMask.empty() && fixedMask[patch])
+          continue;
+        const Triangle& tri = mesh.triangle(t);
+        const Vec3 e1 = mesh.point(tri[1]) - mesh.point(tri[0]), e2 = mesh.point(tri[2]) - mesh.point(tri[0]);
+        const double twice = e1.cross(e2).norm();
+        if (!(twice > 1e-14 * (e1.squaredNorm() + e2.squaredNorm())))
+          continue;
+        if (pass == 0)
+        {
+          area += 0.5 * twice;
+          continue;
+        }
+        std::array<Eigen::Vector2d, 3> q;
+        for (int k = 0; k < 3; ++k)
+        {
+          std::array<double, 3> b{};
+          EXPECT_TRUE(placeIn(s.domain, s.map, tri[k], patch, b));
+          q[k] = b[0] * corner[0] + b[1] * corner[1] + b[2] * corner[2];
+        }
+        Eigen::Matrix2d image, surface;
+        image.col(0) = q[1] - q[0];
+        image.col(1) = q[2] - q[0];
+        surface << e1.norm(), e2.dot(e1) / e1.norm(), 0.0, twice / e1.norm();
+        const Eigen::Matrix2d j = image * surface.inverse();
+        energy += 0.5 * twice * j.squaredNorm() * (1.0 + 1.0 / (j.determinant() * j.determinant()));
+      }
+    }
+    return energy / (4.0 * area);
+  };
+  GlobalMapOptions still;
+  still.maximumIterations = 0;
+  still.curvatureDensity = 0.0;
+  GlobalMapReport whole, part;
+  ASSERT_TRUE(optimizeGlobalMap(s.straight.net, s.domain, s.map, result, still, &whole).ok());
+  still.fixedPatches = fixed;
+  ASSERT_TRUE(optimizeGlobalMap(s.straight.net, s.domain, s.map, result, still, &part).ok());
+  EXPECT_NEAR(whole.distortionBefore, startDistortion({}), 1e-9 * whole.distortionBefore);
+  EXPECT_NEAR(part.distortionBefore, startDistortion(fixed), 1e-9 * part.distortionBefore);
+  EXPECT_GT(std::abs(part.distortionBefore - whole.distortionBefore), 1e-3 * whole.distortionBefore);
+
+  // Wrong sizes, and nothing left to map.
+  for (const std::size_t size : { std::size_t{ 3 }, static_cast<std::size_t>(baseTriangles + 1) })
+  {
+    options.fixedPatches.assign(size, 0);
+    const Status refused = optimizeGlobalMap(s.straight.net, s.domain, s.map, result, options);
+    EXPECT_NE(refused.message().find("fixedPatches has " + std::to_string(size) + " entries"), std::string::npos)
+      << refused.message();
+  }
+  options.fixedPatches.assign(baseTriangles, 1);
+  const Status everything = freeCurves(s.straight, s.domain, s.map, options, cut, cutMap);
+  EXPECT_NE(everything.message().find("fixedPatches fixes every patch"), std::string::npos) << everything.message();
+}
+
+TEST(GlobalMap, VerticesBetweenFixedAndFreePatchesSlideAlongTheirEdge)
+{
+  // The patches round base vertex 0 fixed: the vertices of the curves
+  // between them and the free patches slide along their base edges (each
+  // stays on its edge, in its order along it, and some move), the other
+  // vertices of the fixed patches keep their places, and no triangle
+  // flips, the fixed patches' own included (one would where a sliding
+  // vertex passed its neighbour along the edge), in the map and in the
+  // cut along it, which keeps those curves' vertices.
+  CMP_REQUIRE_SHARED_DATA();
+  const Straightened s = straightened("381", "381");
+  const BaseDomain& domain = s.domain;
+  const TracedNet& net = s.straight.net;
+  const EditableMesh& mesh = net.mesh;
+  const int baseTriangles = domain.mesh.triangleCount();
+  std::vector<char> fixed(baseTriangles, 0);
+  for (int t = 0; t < baseTriangles; ++t)
+  {
+    const Triangle& tri = domain.mesh.triangles[t];
+    fixed[t] = std::find(tri.begin(), tri.end(), 0) != tri.end() ? 1 : 0;
+  }
+  std::vector<int> boundaryEdges;
+  std::vector<char> sliding(mesh.vertexCount(), 0), inFixed(mesh.vertexCount(), 0);
+  for (std::size_t e = 0; e < net.curves.size(); ++e)
+    if (fixed[net.leftTriangle[e]] != fixed[net.rightTriangle[e]])
+    {
+      boundaryEdges.push_back(static_cast<int>(e));
+      for (std::size_t i = 1; i + 1 < net.curves[e].size(); ++i)
+        sliding[net.curves[e][i]] = 1;
+    }
+  ASSERT_GE(boundaryEdges.size(), 3u);
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    if (fixed[net.patchOfTriangle[t]])
+      for (int v : mesh.triangle(t))
+        inFixed[v] = sliding[v] ? 0 : 1;
+
+  GlobalMapOptions options;
+  options.maximumIterations = 10;
+  options.leastRelativeGain = 0.0;
+  options.fixedPatches = fixed;
+  PatchParameterization result;
+  GlobalMapReport report;
+  const Status status = optimizeGlobalMap(net, domain, s.map, result, options, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_TRUE(std::isfinite(report.maximumDistortion)); // no free triangle flipped or crushed
+
+  // On the edge (0 at the free patch's third corner), in order from its
+  // first end to its second, some moved along it. `map` the map to read.
+  const auto checkSlides = [&](const PatchParameterization& map, const std::vector<std::vector<int>>& curves) {
+    int count = 0, moved = 0;
+    for (int e : boundaryEdges)
+    {
+      const int free = fixed[net.leftTriangle[e]] ? net.rightTriangle[e] : net.leftTriangle[e];
+      const Triangle& bt = domain.mesh.triangles[free];
+      const int ka = static_cast<int>(std::find(bt.begin(), bt.end(), net.baseEdges[e][0]) - bt.begin());
+      const int kb = static_cast<int>(std::find(bt.begin(), bt.end(), net.baseEdges[e][1]) - bt.begin());
+      const int ko = 3 - ka - kb;
+      EXPECT_EQ(curves[e], net.curves[e]) << "curve " << e; // the same vertices
+      double previous = 0.0;
+      for (std::size_t i = 1; i + 1 < curves[e].size(); ++i)
+      {
+        const int v = curves[e][i];
+        std::array<double, 3> c{}, c0{};
+        EXPECT_TRUE(placeIn(domain, map, v, free, c)) << "vertex " << v;
+        EXPECT_TRUE(placeIn(domain, s.map, v, free, c0)) << "vertex " << v;
+        EXPECT_LE(std::abs(c[ko]), 1e-12) << "vertex " << v << " off its edge " << e;
+        EXPECT_GT(c[kb], previous) << "vertex " << v << " passed its neighbour along edge " << e;
+        previous = c[kb];
+        moved += std::abs(c[kb] - c0[kb]) > 1e-3 ? 1 : 0;
+        ++count;
+      }
+      EXPECT_LT(previous, 1.0) << "edge " << e;
+    }
+    EXPECT_GT(count, 10);
+    return moved;
+  };
+  for (int e : boundaryEdges)
+    for (std::size_t i = 1; i + 1 < net.curves[e].size(); ++i)
+    {
+      const int v = net.curves[e][i];
+      const int free = fixed[net.leftTriangle[e]] ? net.rightTriangle[e] : net.leftTriangle[e];
+      EXPECT_EQ(result.baseTriangle[v], free) << "vertex " << v; // read in its free patch
+    }
+  EXPECT_GT(checkSlides(result, net.curves), 0);
+  int kept = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (!inFixed[v])
+      continue;
+    ++kept;
+    EXPECT_EQ(result.baseTriangle[v], s.map.baseTriangle[v]) << "vertex " << v;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(result.baseCoordinates[v][k], s.map.baseCoordinates[v][k]) << "vertex " << v;
+  }
+  EXPECT_GT(kept, 0);
+
+  // Every triangle drawn in its own patch (a base triangle drawn
+  // equilateral, unit sides) turns counter-clockwise; `strict` for those
+  // that must have area (a cut's pieces may be slivers of none).
+  const auto signedArea = [&](const PatchParameterization& map, const Triangle& tri, int patch, double& area) {
+    const std::array<Eigen::Vector2d, 3> corner{ Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, 0.0),
+      Eigen::Vector2d(0.5, 0.5 * std::sqrt(3.0)) };
+    std::array<Eigen::Vector2d, 3> q;
+    for (int k = 0; k < 3; ++k)
+    {
+      std::array<double, 3> b{};
+      if (!placeIn(domain, map, tri[k], patch, b))
+        return false;
+      q[k] = b[0] * corner[0] + b[1] * corner[1] + b[2] * corner[2];
+    }
+    const Eigen::Vector2d e1 = q[1] - q[0], e2 = q[2] - q[0];
+    area = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+    return true;
+  };
+  int fixedTriangles = 0, withSlidingCorner = 0;
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    const int patch = net.patchOfTriangle[t];
+    if (!fixed[patch])
+      continue;
+    const Triangle& tri = mesh.triangle(t);
+    double area = 0.0;
+    ASSERT_TRUE(signedArea(result, tri, patch, area)) << "triangle " << t;
+    EXPECT_GT(area, 0.0) << "fixed triangle " << t << " flipped";
+    ++fixedTriangles;
+    withSlidingCorner += sliding[tri[0]] || sliding[tri[1]] || sliding[tri[2]] ? 1 : 0;
+  }
+  EXPECT_GT(withSlidingCorner, 0);
+  EXPECT_GT(fixedTriangles, withSlidingCorner);
+
+  // The cut along the map: the sliding vertices' curves keep their
+  // vertices, on their edges; no piece turns clockwise.
+  StraightenedNet cut;
+  PatchParameterization cutMap;
+  FreeCurvesReport freed;
+  ASSERT_TRUE(freeCurves(s.straight, domain, s.map, options, cut, cutMap, &freed).ok());
+  ASSERT_TRUE(freed.applied) << freed.reason;
+  for (const std::string& problem : validateLayout(toLabelledSurface(cut.net, domain), toBaseTriangles(domain)))
+    ADD_FAILURE() << problem;
+  EXPECT_GT(checkSlides(cutMap, cut.net.curves), 0);
+  int flipped = 0;
+  for (int t = 0; t < cut.net.mesh.triangleCount(); ++t)
+  {
+    const int patch = cut.net.patchOfTriangle[t];
+    double area = 0.0;
+    ASSERT_TRUE(signedArea(cutMap, cut.net.mesh.triangle(t), patch, area)) << "cut triangle " << t;
+    flipped += area < (fixed[patch] ? 1e-300 : -1e-12) ? 1 : 0;
+  }
+  EXPECT_EQ(flipped, 0);
+}

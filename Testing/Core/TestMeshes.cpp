@@ -5,6 +5,7 @@
 #include <cmp/map/NetStraightener.h>
 #include <cmp/map/Straighten.h>
 #include <cmp/layout/NetTracer.h>
+#include <cmp/layout/OpenSurface.h>
 #include <cmp/mesh/Subdivision.h>
 
 #include <gtest/gtest.h>
@@ -12,6 +13,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <limits>
+#include <map>
+#include <queue>
 
 namespace cmp::test
 {
@@ -249,6 +254,194 @@ Status indexRealModels(
     if (Status s = out.surfaces[i].build(model.net, domain, model.parameterization); !s.ok())
       return s;
     out.collection.push_back(&out.surfaces[i]);
+  }
+  return {};
+}
+
+
+namespace
+{
+
+/// Shortest edge-path distance from `source` to every vertex of `mesh`.
+std::vector<double> edgePathDistances(const TriangleMesh& mesh, int source, std::vector<int>* parent = nullptr)
+{
+  if (parent)
+    parent->assign(mesh.vertexCount(), -1);
+  std::vector<std::vector<int>> around(mesh.vertexCount());
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      around[t[k]].push_back(t[(k + 1) % 3]);
+      around[t[(k + 1) % 3]].push_back(t[k]);
+    }
+  std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  distance[source] = 0.0;
+  queue.push({ 0.0, source });
+  while (!queue.empty())
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v])
+      continue;
+    for (int w : around[v])
+    {
+      const double through = d + (mesh.points[v] - mesh.points[w]).norm();
+      if (through < distance[w])
+      {
+        distance[w] = through;
+        if (parent)
+          (*parent)[w] = v;
+        queue.push({ through, w });
+      }
+    }
+  }
+  return distance;
+}
+
+} // namespace
+
+Status cutAroundFeature(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
+  int feature, double radius, OpenModel& out)
+{
+  out = OpenModel{};
+  const int baseVertices = domain.mesh.vertexCount();
+  const int bx = static_cast<int>(std::find(domain.featureIds.begin(), domain.featureIds.end(), feature) -
+    domain.featureIds.begin());
+  if (bx >= baseVertices)
+    return Status::error("no base vertex has feature " + std::to_string(feature));
+  // The ring of X in L0, counter-clockwise.
+  std::map<int, int> next;
+  for (const Triangle& t : domain.mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == bx)
+        next[t[(k + 1) % 3]] = t[(k + 2) % 3];
+  std::vector<int> ring{ next.begin()->first };
+  while (next.count(ring.back()) && next[ring.back()] != ring.front() && ring.size() <= next.size())
+    ring.push_back(next[ring.back()]);
+  if (ring.size() != next.size() || !next.count(ring.back()))
+    return Status::error("feature " + std::to_string(feature) + " lies on L0's boundary: no disk around it to cut");
+  const int x = landmarks[feature];
+  const std::vector<double> fromX = edgePathDistances(surface, x);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int y : ring)
+    nearest = std::min(nearest, fromX[landmarks[domain.featureIds[y]]]);
+  const double cut = radius * nearest;
+  std::vector<int> newIndex(surface.vertexCount(), -1);
+  for (const Triangle& t : surface.triangles)
+  {
+    if (fromX[t[0]] < cut || fromX[t[1]] < cut || fromX[t[2]] < cut)
+      continue;
+    Triangle kept;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (newIndex[t[k]] < 0)
+      {
+        newIndex[t[k]] = out.surface.vertexCount();
+        out.surface.points.push_back(surface.points[t[k]]);
+      }
+      kept[k] = newIndex[t[k]];
+    }
+    out.surface.triangles.push_back(kept);
+  }
+  std::vector<std::vector<int>> before, loops;
+  if (Status s = boundaryLoops(surface, before); !s.ok())
+    return s;
+  if (Status s = boundaryLoops(out.surface, loops); !s.ok())
+    return s;
+  if (loops.size() != before.size() + 1)
+    return Status::error("the cut leaves " + std::to_string(loops.size()) + " boundary loops, not " +
+      std::to_string(before.size() + 1));
+  // The new loop is the one nearest to X.
+  std::vector<int> oldIndex(out.surface.vertexCount());
+  for (int v = 0; v < surface.vertexCount(); ++v)
+    if (newIndex[v] >= 0)
+      oldIndex[newIndex[v]] = v;
+  std::sort(loops.begin(), loops.end(), [&](const std::vector<int>& a, const std::vector<int>& b) {
+    return fromX[oldIndex[a.front()]] < fromX[oldIndex[b.front()]];
+  });
+  // The boundary landmarks: where the shortest way from X to each
+  // neighbour leaves the cut (its last vertex outside it), as a place on the
+  // loop. The loop runs clockwise round X (the surface on its left), so
+  // the neighbours, counter-clockwise, meet it backwards; two that meet it
+  // at one vertex are moved apart along it.
+  const std::vector<int>& loop = loops[0];
+  std::vector<int> onLoop(surface.vertexCount(), -1);
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    for (int v = 0; v < surface.vertexCount(); ++v)
+      if (newIndex[v] == loop[i])
+        onLoop[v] = static_cast<int>(i);
+  std::vector<int> parent;
+  edgePathDistances(surface, x, &parent);
+  std::vector<int> boundary;
+  std::vector<char> taken(loop.size(), 0);
+  for (int y : ring)
+  {
+    const int landmark = landmarks[domain.featureIds[y]];
+    if (newIndex[landmark] < 0)
+      return Status::error("the cut removes the landmark of feature " + std::to_string(domain.featureIds[y]));
+    int at = landmark, last = -1;
+    for (; at != x && at >= 0; at = parent[at])
+      if (fromX[at] >= cut && onLoop[at] >= 0)
+        last = onLoop[at];
+    if (last < 0)
+      return Status::error("the way to feature " + std::to_string(domain.featureIds[y]) + " does not cross the cut");
+    const int count = static_cast<int>(loop.size());
+    for (int moved = 0; taken[last] && moved < count; ++moved)
+      last = (last + count - 1) % count;
+    taken[last] = 1;
+    boundary.push_back(last);
+  }
+  // Ways that cross each other meet the loop out of order: the places, in
+  // the loop's order backwards from the first neighbour's, go to the
+  // neighbours in theirs.
+  const int count = static_cast<int>(loop.size());
+  const int start = boundary.front();
+  std::vector<int> places(boundary);
+  std::sort(places.begin(), places.end(),
+    [&](int a, int b) { return (start - a + count) % count < (start - b + count) % count; });
+  for (std::size_t i = 0; i < boundary.size(); ++i)
+    boundary[i] = loop[places[i]];
+  const auto newFeature = [&](int f) { return f < feature ? f : f - 1; };
+  out.landmarks.assign(landmarks.size() - 1 + boundary.size(), kMissingLandmark);
+  for (int f = 0; f < static_cast<int>(landmarks.size()); ++f)
+  {
+    if (f == feature)
+      continue;
+    if (newIndex[landmarks[f]] < 0)
+      return Status::error("the cut removes the landmark of feature " + std::to_string(f));
+    out.landmarks[newFeature(f)] = newIndex[landmarks[f]];
+  }
+  const int first = static_cast<int>(landmarks.size()) - 1;
+  for (std::size_t i = 0; i < boundary.size(); ++i)
+    out.landmarks[first + i] = boundary[i];
+  // L0 without X's star, with the boundary landmarks.
+  const auto newBase = [&](int v) { return v < bx ? v : v - 1; };
+  for (int v = 0; v < baseVertices; ++v)
+    if (v != bx)
+    {
+      out.domain.mesh.points.push_back(domain.mesh.points[v]);
+      out.domain.featureIds.push_back(newFeature(domain.featureIds[v]));
+    }
+  std::map<int, int> boundaryBase;
+  for (std::size_t i = 0; i < boundary.size(); ++i)
+  {
+    boundaryBase[ring[i]] = out.domain.mesh.vertexCount();
+    out.domain.mesh.points.push_back(out.surface.points[boundary[i]]);
+    out.domain.featureIds.push_back(first + static_cast<int>(i));
+  }
+  for (const Triangle& t : domain.mesh.triangles)
+  {
+    const int k = static_cast<int>(std::find(t.begin(), t.end(), bx) - t.begin());
+    if (k == 3)
+    {
+      out.domain.mesh.triangles.push_back({ newBase(t[0]), newBase(t[1]), newBase(t[2]) });
+      continue;
+    }
+    const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+    out.domain.mesh.triangles.push_back({ boundaryBase[a], newBase(a), newBase(b) });
+    out.domain.mesh.triangles.push_back({ boundaryBase[a], newBase(b), boundaryBase[b] });
   }
   return {};
 }

@@ -74,6 +74,26 @@ std::vector<LandmarkedModel> landmarkedRealModels();
 /// \brief The landmarked real model called `name`; a test failure if absent.
 LandmarkedModel landmarkedRealModel(const std::string& name);
 
+/// \brief An open model made from a closed one (issue 27 B): the triangles
+///        within `radius` times the shortest edge-path distance from the
+///        landmark of `feature` to a landmark of its L0 neighbours are cut
+///        away, and a boundary landmark is placed where the cut meets the
+///        way to each neighbour (the boundary vertex nearest to it along
+///        edges). `domain` loses `feature`'s star: each of its triangles
+///        (X, Y_i, Y_i+1) becomes (B_i, Y_i, Y_i+1) and (B_i, Y_i+1, B_i+1),
+///        the B_i the new boundary landmarks. Features above `feature` move
+///        down by one; the B_i come last, in `domain`'s order round X.
+///        Depends on `domain` and `feature` alone for the open L0, so every
+///        model of a collection cut the same way shares it.
+struct OpenModel
+{
+  TriangleMesh surface;
+  LandmarkList landmarks;
+  BaseDomain domain;
+};
+Status cutAroundFeature(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
+  int feature, double radius, OpenModel& out);
+
 /// \brief The base domain `L0` built from the landmarks of real model
 ///        `name` ("381" for most tests); a test failure if it cannot be.
 BaseDomain realBaseDomain(const std::string& name);

@@ -181,3 +181,82 @@ TEST(NetStraightener, RebuildsTheNetFromPatchIdsAndRefusesBadInput)
   EXPECT_EQ(report.sweeps, 0);
   EXPECT_NEAR(report.netLengthAfter, report.netLengthBefore, 1e-12 * report.netLengthBefore);
 }
+
+TEST(NetStraightener, KeptFeaturesKeepTheCurvesBetweenThemAndRefuseUnknownFeatures)
+{
+  // The bumpy sphere's octahedron layout with the face (0, 2, 4) kept: the
+  // stars of its landmarks are not straightened, so its three curves are
+  // the traced ones, vertex for vertex, while the other curves move.
+  const TriangleMesh mesh = test::bumpySphere(4);
+  const TriangleMesh o = test::octahedron();
+  BaseDomain domain{ o, { 0, 1, 2, 3, 4, 5 } };
+  LandmarkList landmarks;
+  const Eigen::Matrix3d turn =
+    (Eigen::AngleAxisd(0.4, Vec3::UnitZ()) * Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized())).toRotationMatrix();
+  for (const Vec3& axis : o.points)
+    landmarks.push_back(test::nearestVertex(mesh, turn * axis));
+  TracedNet traced;
+  ASSERT_TRUE(traceFeatureNet(mesh, landmarks, domain, traced).ok());
+
+  // A straightened curve as the traced vertices it runs through (-1 for a
+  // vertex the straightening made) and as points.
+  const auto asTraced = [](const StraightenedNet& s, const std::vector<int>& curve)
+  {
+    std::vector<int> vertices;
+    for (int v : curve)
+      vertices.push_back(s.inputPoint[v].supportSize() == 1 ? s.inputPoint[v].vertex[0] : -1);
+    return vertices;
+  };
+  const auto points = [](const EditableMesh& m, const std::vector<int>& curve)
+  {
+    std::vector<Vec3> p;
+    for (int v : curve)
+      p.push_back(m.point(v));
+    return p;
+  };
+  const std::vector<int> kept{ 0, 2, 4 };
+  const auto isKept = [&](int bv) { return std::find(kept.begin(), kept.end(), bv) != kept.end(); };
+
+  NetStraightenerOptions options;
+  StraightenedNet unkept;
+  ASSERT_TRUE(straightenNet(traced, domain, unkept, options).ok());
+  options.keptFeatures = kept;
+  StraightenedNet straight;
+  NetStraightenerReport report;
+  const Status status = straightenNet(traced, domain, straight, options, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_GE(report.sweeps, 1);
+  EXPECT_EQ(report.skippedStars, 0);
+  for (const std::string& problem :
+    validateLayout(toLabelledSurface(straight.net, domain), toBaseTriangles(domain)))
+    ADD_FAILURE() << problem;
+  expectOnInputSurface(traced, straight, "kept features");
+
+  int keptCurves = 0, freedKeptCurves = 0, movedOthers = 0;
+  for (std::size_t e = 0; e < traced.curves.size(); ++e)
+  {
+    const int a = traced.baseEdges[e][0], b = traced.baseEdges[e][1];
+    ASSERT_EQ(straight.net.baseEdges[e], traced.baseEdges[e]);
+    if (isKept(a) && isKept(b))
+    {
+      ++keptCurves;
+      EXPECT_EQ(asTraced(straight, straight.net.curves[e]), traced.curves[e]) << "curve " << a << "-" << b;
+      EXPECT_EQ(points(straight.net.mesh, straight.net.curves[e]), points(traced.mesh, traced.curves[e]))
+        << "curve " << a << "-" << b;
+      freedKeptCurves += asTraced(unkept, unkept.net.curves[e]) != traced.curves[e] ? 1 : 0;
+    }
+    else if (!isKept(a) && !isKept(b))
+      movedOthers += asTraced(straight, straight.net.curves[e]) != traced.curves[e] ? 1 : 0;
+  }
+  EXPECT_EQ(keptCurves, 3);
+  EXPECT_GT(freedKeptCurves, 0); // without keptFeatures they would move
+  EXPECT_GT(movedOthers, 0);     // the other stars are still straightened
+
+  for (int bad : { 6, -1 })
+  {
+    options.keptFeatures = { 0, bad };
+    const Status refused = straightenNet(traced, domain, straight, options);
+    EXPECT_NE(refused.message().find("keptFeatures names feature " + std::to_string(bad)), std::string::npos)
+      << refused.message();
+  }
+}

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <queue>
 
 using namespace cmp;
 
@@ -165,6 +167,203 @@ TEST(NetTracer, RefusesBadInput)
     torus.featureIds.push_back(i);
   expectError(traceFeatureNet(test::sphere(3), { 0, 1, 2, 3, 4, 5, 6, 7, 8 }, torus, net), "genus 1");
   expectError(traceFeatureNet(TriangleMesh{}, {}, octahedron, net), "empty surface");
+}
+
+namespace
+{
+
+/// A shortest path along mesh edges from `from` to `to` through vertices not
+/// marked in `blocked` (the ends may be), or empty.
+std::vector<int> meshPath(const TriangleMesh& mesh, int from, int to, const std::vector<char>& blocked)
+{
+  std::vector<std::vector<int>> next(mesh.vertexCount());
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      next[t[k]].push_back(t[(k + 1) % 3]);
+  std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
+  std::vector<int> parent(mesh.vertexCount(), -1);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  distance[from] = 0.0;
+  queue.push({ 0.0, from });
+  while (!queue.empty())
+  {
+    const auto [d, x] = queue.top();
+    queue.pop();
+    if (d > distance[x] || x == to)
+      continue;
+    if (x != from && blocked[x])
+      continue;
+    for (int y : next[x])
+    {
+      const double dy = d + (mesh.points[x] - mesh.points[y]).norm();
+      if (dy < distance[y] && (y == to || !blocked[y]))
+      {
+        distance[y] = dy;
+        parent[y] = x;
+        queue.push({ dy, y });
+      }
+    }
+  }
+  std::vector<int> path;
+  if (parent[to] < 0)
+    return path;
+  for (int v = to; v != from; v = parent[v])
+    path.push_back(v);
+  path.push_back(from);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+/// The curve of the base edge between features (= base vertices) `a` and
+/// `b`, from a's landmark to b's.
+std::vector<int> curveBetween(const TracedNet& net, int a, int b)
+{
+  for (std::size_t e = 0; e < net.baseEdges.size(); ++e)
+  {
+    if (net.baseEdges[e] == std::array<int, 2>{ a, b })
+      return net.curves[e];
+    if (net.baseEdges[e] == std::array<int, 2>{ b, a })
+      return std::vector<int>(net.curves[e].rbegin(), net.curves[e].rend());
+  }
+  return {};
+}
+
+/// Traces with `options` and checks the net as `expectValidNet()` does,
+/// and that every preset curve is the curve of its base edge, vertex for
+/// vertex.
+void expectPresetCurvesKept(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomain& domain,
+  const NetTracerOptions& options, const std::string& what)
+{
+  TracedNet net;
+  const Status status = traceFeatureNet(surface, landmarks, domain, net, options);
+  ASSERT_TRUE(status.ok()) << what << ": " << status.message();
+  const LabelledSurface out = toLabelledSurface(net, domain);
+  for (const std::string& problem : validateLayout(out, toBaseTriangles(domain)))
+    ADD_FAILURE() << what << ": " << problem;
+  EXPECT_NEAR(totalArea(out), surfaceArea(surface), 1e-9 * surfaceArea(surface)) << what;
+  for (const PresetCurve& preset : options.presetCurves)
+    EXPECT_EQ(curveBetween(net, preset.from, preset.to), preset.vertices)
+      << what << ": preset curve from " << preset.from << " to " << preset.to;
+}
+
+} // namespace
+
+TEST(NetTracer, PresetCurvesAreKeptAsGiven)
+{
+  // On the bumpy sphere, the curve from +x (0) to +y (2) is given as a
+  // detour through a vertex well inside the face (0, 2, 4), and the curve
+  // from -z (5) to +x as a shortest path beside it, given from its other
+  // end: both are the net's curves exactly, and the net is valid.
+  const TriangleMesh sphere = bumpySphere(4);
+  const BaseDomain octahedron = octahedronDomain();
+  const LandmarkList landmarks = landmarksAt(sphere, octahedron.mesh.points);
+  std::vector<char> blocked(sphere.vertexCount(), 0);
+  for (int v : landmarks)
+    blocked[v] = 1;
+  const int waypoint = nearestVertex(sphere, Vec3(1.0, 1.0, 0.8));
+  std::vector<int> detour = meshPath(sphere, landmarks[0], waypoint, blocked);
+  ASSERT_GE(detour.size(), 3u);
+  for (int v : detour)
+    blocked[v] = 1;
+  const std::vector<int> rest = meshPath(sphere, waypoint, landmarks[2], blocked);
+  ASSERT_GE(rest.size(), 3u);
+  detour.insert(detour.end(), rest.begin() + 1, rest.end());
+  for (int v : detour)
+    blocked[v] = 1;
+  const std::vector<int> down = meshPath(sphere, landmarks[5], landmarks[0], blocked);
+  ASSERT_GE(down.size(), 3u);
+
+  TracedNet plain;
+  ASSERT_TRUE(traceFeatureNet(sphere, landmarks, octahedron, plain).ok());
+  EXPECT_NE(curveBetween(plain, 0, 2), detour); // the tracer alone goes elsewhere
+
+  NetTracerOptions options;
+  options.presetCurves = { { 0, 2, detour }, { 5, 0, down } };
+  expectPresetCurvesKept(sphere, landmarks, octahedron, options, "detour and shortest path");
+  options.detectSwirls = false;
+  expectPresetCurvesKept(sphere, landmarks, octahedron, options, "without the swirl detector");
+
+  // The octahedron on itself: preset curves of one edge each, between
+  // landmarks, are not split to make room. A cycle (the face 0, 2, 4) and
+  // a spoke, then every edge (nothing left to trace).
+  NetTracerOptions edges;
+  edges.presetCurves = { { 0, 2, { 0, 2 } }, { 4, 2, { 4, 2 } }, { 0, 4, { 0, 4 } }, { 5, 1, { 5, 1 } } };
+  expectPresetCurvesKept(octahedron.mesh, { 0, 1, 2, 3, 4, 5 }, octahedron, edges, "one face and a spoke");
+  // The star of 0, as a cap's spokes: the traced curves cannot reach 0, so
+  // the spanning tree is complete only if the preset curves count in it.
+  edges.presetCurves = { { 0, 2, { 0, 2 } }, { 0, 3, { 0, 3 } }, { 4, 0, { 4, 0 } }, { 5, 0, { 5, 0 } } };
+  expectPresetCurvesKept(octahedron.mesh, { 0, 1, 2, 3, 4, 5 }, octahedron, edges, "the star of 0");
+  edges.presetCurves.clear();
+  const TriangleMesh& o = octahedron.mesh;
+  for (const Triangle& t : o.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < t[(k + 1) % 3])
+        edges.presetCurves.push_back({ t[k], t[(k + 1) % 3], { t[k], t[(k + 1) % 3] } });
+  ASSERT_EQ(edges.presetCurves.size(), 12u);
+  expectPresetCurvesKept(octahedron.mesh, { 0, 1, 2, 3, 4, 5 }, octahedron, edges, "every edge preset");
+}
+
+TEST(NetTracer, RefusesBadPresetCurvesNamingTheProblem)
+{
+  const TriangleMesh sphere = bumpySphere(3);
+  const BaseDomain octahedron = octahedronDomain();
+  const LandmarkList landmarks = landmarksAt(sphere, octahedron.mesh.points);
+  std::vector<char> blocked(sphere.vertexCount(), 0);
+  for (int v : landmarks)
+    blocked[v] = 1;
+  const std::vector<int> good = meshPath(sphere, landmarks[0], landmarks[2], blocked);
+  ASSERT_GE(good.size(), 4u);
+  {
+    NetTracerOptions options;
+    options.presetCurves = { { 0, 2, good } };
+    expectPresetCurvesKept(sphere, landmarks, octahedron, options, "the good curve");
+  }
+  const auto expectRefused = [&](const std::vector<PresetCurve>& presets, const std::string& fragment)
+  {
+    NetTracerOptions options;
+    options.presetCurves = presets;
+    TracedNet net;
+    const Status s = traceFeatureNet(sphere, landmarks, octahedron, net, options);
+    EXPECT_FALSE(s.ok()) << fragment;
+    EXPECT_NE(s.message().find(fragment), std::string::npos) << s.message();
+  };
+  const std::vector<int> reversed(good.rbegin(), good.rend());
+  expectRefused({ { 0, 9, good } }, "preset curve 0 (features 0 to 9): feature 9 is out of range (0..5)");
+  expectRefused({ { -1, 2, good } }, "feature -1 is out of range");
+  expectRefused({ { 0, 1, good } }, "no edge of the base domain joins the two features");
+  expectRefused({ { 0, 2, { landmarks[0] } } }, "needs at least 2 vertices (it has 1)");
+  expectRefused({ { 2, 0, good } }, "does not run from the landmark of feature 2");
+  std::vector<int> broken = good;
+  broken[1] = sphere.vertexCount();
+  expectRefused({ { 0, 2, broken } }, "is out of range (the surface has");
+  broken = good;
+  broken.erase(broken.begin() + 1);
+  expectRefused({ { 0, 2, broken } }, "are not joined by a mesh edge");
+  broken = good;
+  broken.insert(broken.begin() + 3, { good[1], good[2] }); // back and forth along two edges
+  expectRefused({ { 0, 2, broken } }, "vertex " + std::to_string(good[1]) + " repeats");
+  // Through another landmark: 0 to 4 (+z) by way of 2 (+y).
+  std::vector<int> through = good;
+  std::vector<char> beyond = blocked;
+  for (int v : good)
+    beyond[v] = 1;
+  const std::vector<int> up = meshPath(sphere, landmarks[2], landmarks[4], beyond);
+  ASSERT_GE(up.size(), 2u);
+  through.insert(through.end(), up.begin() + 1, up.end());
+  expectRefused({ { 0, 4, through } }, "inner vertex " + std::to_string(landmarks[2]) + " is a landmark");
+  // Two curves through one inner vertex: 0 to 3 leaves along the first
+  // edge of 0 to 2.
+  std::vector<char> aside = blocked;
+  for (std::size_t k = 2; k < good.size(); ++k)
+    aside[good[k]] = 1;
+  std::vector<int> sharing = meshPath(sphere, good[1], landmarks[3], aside);
+  ASSERT_FALSE(sharing.empty());
+  sharing.insert(sharing.begin(), landmarks[0]);
+  expectRefused({ { 0, 2, good }, { 0, 3, sharing } },
+    "preset curve 1 (features 0 to 3): inner vertex " + std::to_string(good[1]) + " is on preset curve 0 too");
+  expectRefused({ { 0, 2, good }, { 2, 0, reversed } },
+    "preset curve 1 (features 2 to 0): preset curve 0 is already the curve of that base edge");
 }
 
 TEST(NetTracer, EveryRealModelWithL0From381AndFromSpot)

@@ -1,4 +1,5 @@
 #include <cmp/analysis/LoopWavelet.h>
+#include <cmp/mesh/BoundaryLoops.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
@@ -423,6 +424,13 @@ LoopWaveletTransform& LoopWaveletTransform::operator=(LoopWaveletTransform&&) no
 Status LoopWaveletTransform::build(const SemiRegularMesh& mesh)
 {
   *this = LoopWaveletTransform{};
+  // Loop's rules here are those of a closed surface: an open remesh (a
+  // surface with boundaries, issue 27 B) would need boundary rules.
+  std::vector<std::vector<int>> loops;
+  if (Status s = boundaryLoops(TriangleMesh{ std::vector<Vec3>(mesh.vertexCount(), Vec3::Zero()), mesh.triangles }, loops);
+      !s.ok() || !loops.empty())
+    return Status::error("the wavelet transform needs a closed remesh, and this one has boundary loops (an open "
+                         "surface): wavelet details of surfaces with boundaries are not supported yet");
   std::vector<int> vertexCount;
   if (Status s = countLevelVertices(mesh, vertexCount); !s.ok())
     return s;

@@ -1,5 +1,6 @@
 #include <cmp/basedomain/BaseDomainBuilder.h>
 
+#include <cmp/mesh/BoundaryLoops.h>
 #include <cmp/mesh/SurfaceCheck.h>
 #include <cmp/mesh/TriangleShape.h>
 
@@ -8,7 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <queue>
+#include <string>
+#include <utility>
 
 namespace cmp
 {
@@ -187,6 +191,54 @@ std::vector<Quadric> initialQuadrics(const TriangleMesh& mesh)
   return quadrics;
 }
 
+/// Adds, for every edge of `loops` (the surface on its left), the plane
+/// through the edge perpendicular to its triangle, weighted by the edge's
+/// squared length (Garland and Heckbert's boundary constraint), so that a
+/// collapse along a loop prefers its straight stretches.
+void addBoundaryQuadrics(const TriangleMesh& mesh, const std::vector<std::vector<int>>& loops,
+  std::vector<Quadric>& quadrics)
+{
+  std::map<std::pair<int, int>, int> triangleOfEdge;
+  for (const std::vector<int>& loop : loops)
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      triangleOfEdge.emplace(std::make_pair(loop[i], loop[(i + 1) % loop.size()]), -1);
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto found = triangleOfEdge.find({ mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3] });
+      if (found != triangleOfEdge.end())
+        found->second = t;
+    }
+  for (const auto& [edge, t] : triangleOfEdge)
+  {
+    if (t < 0)
+      continue;
+    const Triangle& tri = mesh.triangles[t];
+    const Vec3& a = mesh.points[edge.first];
+    const Vec3 along = mesh.points[edge.second] - a;
+    const Vec3 normal = (mesh.points[tri[1]] - mesh.points[tri[0]]).cross(mesh.points[tri[2]] - mesh.points[tri[0]]);
+    const Vec3 side = along.cross(normal);
+    if (!(side.norm() > 0.0))
+      continue;
+    Eigen::Vector4d plane;
+    plane << side.normalized(), -side.normalized().dot(a);
+    const Quadric q = along.squaredNorm() * plane * plane.transpose();
+    quadrics[edge.first] += q;
+    quadrics[edge.second] += q;
+  }
+}
+
+/// The surface the decimation runs on: the input with every boundary loop
+/// closed by a cap (`capLoop()`), whose centre is one more locked vertex.
+/// For a closed surface, the surface itself.
+struct LandmarkedCaps
+{
+  TriangleMesh mesh;                   ///< The surface, then the centres and the caps' triangles.
+  LandmarkList landmarks;              ///< The landmarks, then the centres (never collapsed).
+  std::vector<std::vector<int>> loops; ///< The surface's boundary loops (`boundaryLoops()`).
+  std::vector<int> centres;            ///< Per loop, its cap's centre.
+};
+
 struct Candidate
 {
   double cost = kInfinity;
@@ -206,17 +258,31 @@ struct QueueEntry
 class Decimator
 {
 public:
-  Decimator(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomainBuilderOptions& options)
-    : mesh_(surface)
+  /// `surface` is the input (its triangles give the quadrics and the scale),
+  /// `capped` what the decimation runs on.
+  Decimator(const TriangleMesh& surface, const LandmarkedCaps& capped, const BaseDomainBuilderOptions& options)
+    : mesh_(capped.mesh)
     , quadrics_(initialQuadrics(surface))
-    , locked_(surface.points.size(), 0)
-    , version_(surface.points.size(), 0)
+    , locked_(capped.mesh.points.size(), 0)
+    , version_(capped.mesh.points.size(), 0)
+    , centre_(capped.mesh.points.size(), 0)
+    , loopOf_(capped.mesh.points.size(), -1)
+    , centres_(capped.centres)
     , options_(options)
     , diagonal_(boundingBoxDiagonal(surface))
   {
-    for (int v : landmarks)
+    for (int v : capped.landmarks)
       locked_[v] = 1;
-    remaining_ = surface.vertexCount() - static_cast<int>(landmarks.size());
+    remaining_ = capped.mesh.vertexCount() - static_cast<int>(capped.landmarks.size());
+    // The caps' triangles are no part of the surface: they add no plane.
+    quadrics_.resize(capped.mesh.points.size(), Quadric::Zero());
+    addBoundaryQuadrics(surface, capped.loops, quadrics_);
+    for (std::size_t j = 0; j < capped.loops.size(); ++j)
+    {
+      centre_[capped.centres[j]] = 1;
+      for (int v : capped.loops[j])
+        loopOf_[v] = static_cast<int>(j);
+    }
   }
 
   Status run(BaseDomainBuilderReport& report)
@@ -249,12 +315,18 @@ public:
 
 private:
   /// Best collapse of u: folding collapses only when nothing else is left.
+  /// Nothing collapses into a cap's centre, and a vertex of a boundary loop
+  /// only along its loop, so the loop stays a chain of boundary vertices
+  /// between its landmarks and the cap a fan over it.
   Candidate evaluate(int u) const
   {
     Candidate best;
     mesh_.neighbours(u, candidates_);
+    const int loop = loopOf_[u];
     for (int v : candidates_)
     {
+      if (centre_[v] || (loop >= 0 && !inCapTriangle(u, v, centres_[loop])))
+        continue;
       if (!mesh_.linkConditionHolds(candidates_, v))
         continue;
       Candidate c = cost(u, v);
@@ -275,6 +347,10 @@ private:
     {
       const Triangle& tri = mesh_.triangle(t);
       if (std::find(tri.begin(), tri.end(), v) != tri.end())
+        continue;
+      // A cap's triangles are no part of the surface: neither their folds
+      // nor their shapes count.
+      if (centre_[tri[0]] || centre_[tri[1]] || centre_[tri[2]])
         continue;
       Vec3 corner[3], moved[3];
       for (int k = 0; k < 3; ++k)
@@ -319,9 +395,61 @@ private:
       schedule(w);
   }
 
+  /// Whether some triangle has corners u, v and `c` (with c a cap's centre:
+  /// whether u and v are neighbours along c's loop).
+  bool inCapTriangle(int u, int v, int c) const
+  {
+    for (int t : mesh_.incident(u))
+    {
+      const Triangle& tri = mesh_.triangle(t);
+      if (std::find(tri.begin(), tri.end(), v) != tri.end() && std::find(tri.begin(), tri.end(), c) != tri.end())
+        return true;
+    }
+    return false;
+  }
+
+  /// Whether edge (u, w) is a cap's: a spoke to its centre or an edge of a
+  /// boundary loop (a triangle on it has a centre). Never flipped, so that
+  /// every cap stays the fan of its centre over its loop.
+  bool capEdge(int u, int w) const
+  {
+    if (centre_[u] || centre_[w])
+      return true;
+    const int loop = loopOf_[u];
+    return loop >= 0 && loop == loopOf_[w] && inCapTriangle(u, w, centres_[loop]);
+  }
+
+  /// Flips the edge between the two loop neighbours p and n of `u` (a
+  /// vertex of a boundary loop), if there is one. Such a chord blocks u for
+  /// good once u's other neighbour is a landmark: u cannot collapse along
+  /// its loop (p and n would be joined twice) and flipping its edge to that
+  /// neighbour would join them again. The chord, the spokes to p and n and
+  /// the centre make a 3-cycle with u on one side, so the two vertices
+  /// opposite the chord lie on either side of it and the flip is valid.
+  bool flipChordAcross(int u)
+  {
+    const int c = centres_[loopOf_[u]];
+    int ends[2] = { -1, -1 };
+    for (int t : mesh_.incident(u))
+    {
+      const Triangle& tri = mesh_.triangle(t);
+      if (std::find(tri.begin(), tri.end(), c) == tri.end())
+        continue;
+      for (int w : tri)
+        if (w != u && w != c)
+          (ends[0] < 0 ? ends[0] : ends[1]) = w;
+    }
+    if (ends[0] < 0 || ends[1] < 0 || capEdge(ends[0], ends[1]))
+      return false;
+    const std::vector<int> around = mesh_.neighbours(ends[0]);
+    return std::binary_search(around.begin(), around.end(), ends[1]) && mesh_.flip(ends[0], ends[1]);
+  }
+
   /// Nothing can be collapsed any more without folding, or at all: first
   /// allow folds, then flip edges around a blocked vertex until its degree
-  /// is 3, which always makes a collapse valid on a closed surface.
+  /// is 3, which always makes a collapse valid on a closed surface (for a
+  /// vertex of a boundary loop: its two loop neighbours and the centre,
+  /// flipping no cap edge).
   Status unblock(BaseDomainBuilderReport& report)
   {
     if (!allowFolding_)
@@ -341,12 +469,19 @@ private:
         flipped = false;
         for (int w : mesh_.neighbours(u))
         {
+          if (capEdge(u, w))
+            continue;
           if (mesh_.flip(u, w))
           {
             ++report.flips;
             flipped = true;
             break;
           }
+        }
+        if (!flipped && loopOf_[u] >= 0 && flipChordAcross(u))
+        {
+          ++report.flips;
+          flipped = true;
         }
       }
       if (evaluate(u).target >= 0)
@@ -365,6 +500,9 @@ private:
   std::vector<Quadric> quadrics_;
   std::vector<char> locked_;
   std::vector<int> version_;
+  std::vector<char> centre_;  ///< Per vertex: 1 for a cap's centre.
+  std::vector<int> loopOf_;   ///< Per vertex: its boundary loop, -1 for none.
+  std::vector<int> centres_;  ///< Per boundary loop: its cap's centre.
   const BaseDomainBuilderOptions& options_;
   double diagonal_;
   int remaining_ = 0;
@@ -380,43 +518,155 @@ void measureQuality(const BaseDomain& domain, BaseDomainBuilderReport& report)
   report.meanShapeQuality = shape.meanShapeQuality;
 }
 
+/// Closes every boundary loop of an open `surface` (one that failed
+/// `checkSurface()` with boundary edges) and checks the contract
+/// (`checkSurfaceWithBoundaries()`): the capped surface passes
+/// `checkSurface()`, the landmarks are valid and every loop carries at least
+/// 3 of them.
+Status capSurface(const TriangleMesh& surface, const LandmarkList& landmarks, LandmarkedCaps& capped)
+{
+  CappedSurface closed;
+  if (Status s = checkSurfaceWithBoundaries(surface, nullptr, &closed); !s.ok())
+    return s;
+  if (Status s = validateLandmarks(landmarks, surface.vertexCount()); !s.ok())
+    return s;
+  if (Status s = checkSurfaceWithBoundaries(surface, &landmarks); !s.ok())
+    return Status::error("open surface: " + s.message());
+  capped.mesh = std::move(closed.mesh);
+  capped.loops = std::move(closed.loops);
+  capped.centres = std::move(closed.centres);
+  capped.landmarks = landmarks;
+  capped.landmarks.insert(capped.landmarks.end(), capped.centres.begin(), capped.centres.end());
+  return {};
+}
+
+/// `loop` rotated to start at its smallest element, for comparing cycles.
+std::vector<int> fromSmallest(std::vector<int> loop)
+{
+  std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+  return loop;
+}
+
+/// The open L0 from the decimated capped one (`closed`, whose base vertices
+/// F + j are the caps' centres): every centre and its triangles removed.
+/// Checks that each centre's star is a fan over its loop's landmarks, in
+/// the loop's order, and that the open L0's boundary loops are those.
+Status removeCaps(const BaseDomain& closed, const LandmarkedCaps& capped, const std::vector<int>& featureOfVertex,
+  int featureCount, BaseDomain& domain)
+{
+  const auto internal = [](const std::string& what) {
+    return Status::error("internal error: the decimated base domain does not fit the surface's boundary: " + what);
+  };
+  std::vector<std::vector<int>> expected;
+  for (std::size_t j = 0; j < capped.loops.size(); ++j)
+  {
+    std::vector<int> corners; // the loop's landmarks, as features, in its order
+    for (int v : capped.loops[j])
+      if (featureOfVertex[v] >= 0)
+        corners.push_back(featureOfVertex[v]);
+    // The cap (q, p, c), c the centre, crosses loop edge p -> q.
+    const int c = featureCount + static_cast<int>(j);
+    std::map<int, int> next;
+    for (const Triangle& t : closed.mesh.triangles)
+      for (int k = 0; k < 3; ++k)
+        if (t[k] == c && !next.emplace(t[(k + 2) % 3], t[(k + 1) % 3]).second)
+          return internal("the cap of the boundary loop through vertex " + std::to_string(capped.loops[j].front()) +
+            " is not a fan");
+    bool fan = next.size() == corners.size();
+    for (std::size_t i = 0; fan && i < corners.size(); ++i)
+    {
+      const auto found = next.find(corners[i]);
+      fan = found != next.end() && found->second == corners[(i + 1) % corners.size()];
+    }
+    if (!fan)
+      return internal("the cap of the boundary loop through vertex " + std::to_string(capped.loops[j].front()) +
+        " is not a fan over the loop's landmarks in order");
+    expected.push_back(fromSmallest(corners));
+  }
+  domain = BaseDomain{};
+  domain.mesh.points.assign(closed.mesh.points.begin(), closed.mesh.points.begin() + featureCount);
+  domain.featureIds.assign(closed.featureIds.begin(), closed.featureIds.begin() + featureCount);
+  std::vector<char> used(featureCount, 0);
+  for (const Triangle& t : closed.mesh.triangles)
+    if (t[0] < featureCount && t[1] < featureCount && t[2] < featureCount)
+    {
+      domain.mesh.triangles.push_back(t);
+      used[t[0]] = used[t[1]] = used[t[2]] = 1;
+    }
+  if (std::find(used.begin(), used.end(), 0) != used.end())
+    return internal("a landmark is on no triangle once the caps are removed");
+  std::vector<std::vector<int>> loops;
+  if (Status s = boundaryLoops(domain.mesh, loops); !s.ok())
+    return internal(s.message());
+  for (std::vector<int>& loop : loops)
+    loop = fromSmallest(loop);
+  std::sort(loops.begin(), loops.end());
+  std::sort(expected.begin(), expected.end());
+  if (loops != expected)
+    return internal("its boundary loops are not the boundary landmarks in the surface's order");
+  return {};
+}
+
 } // namespace
 
 Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmarks, BaseDomain& domain,
   const BaseDomainBuilderOptions& options, BaseDomainBuilderReport* report)
 {
   const SurfaceCheckResult check = checkSurface(surface);
-  if (!check.ok())
+  LandmarkedCaps capped;
+  if (check.ok())
+  {
+    if (Status s = validateLandmarks(landmarks, surface.vertexCount()); !s.ok())
+      return s;
+    if (landmarks.size() < 4)
+      return Status::error("too few landmarks: " + std::to_string(landmarks.size()) +
+        " given, but a closed base domain needs at least 4 (a tetrahedron)");
+    capped.mesh = surface;
+    capped.landmarks = landmarks;
+  }
+  else if (check.defect != SurfaceDefect::BoundaryEdge)
     return Status::error(check.message);
-  if (Status s = validateLandmarks(landmarks, surface.vertexCount()); !s.ok())
+  else if (Status s = capSurface(surface, landmarks, capped); !s.ok())
     return s;
-  if (landmarks.size() < 4)
-    return Status::error("too few landmarks: " + std::to_string(landmarks.size()) +
-      " given, but a closed base domain needs at least 4 (a tetrahedron)");
 
   BaseDomainBuilderReport localReport;
   BaseDomainBuilderReport& out = report ? *report : localReport;
   out = BaseDomainBuilderReport{};
-  Decimator decimator(surface, landmarks, options);
+  Decimator decimator(surface, capped, options);
   if (Status s = decimator.run(out); !s.ok())
     return s;
 
-  const std::vector<int> featureOfVertex = featureIdsOf(landmarks, surface.vertexCount());
-  domain = BaseDomain{};
-  for (int v : landmarks)
-    domain.mesh.points.push_back(surface.points[v]);
-  for (int f = 0; f < static_cast<int>(landmarks.size()); ++f)
-    domain.featureIds.push_back(f);
+  // The decimated surface (capped), base vertex f at landmark f; the caps'
+  // centres follow the landmarks.
+  const int featureCount = static_cast<int>(landmarks.size());
+  const int cappedCount = static_cast<int>(capped.landmarks.size());
+  const std::vector<int> featureOfVertex = featureIdsOf(capped.landmarks, capped.mesh.vertexCount());
+  BaseDomain decimated;
+  for (int v : capped.landmarks)
+    decimated.mesh.points.push_back(capped.mesh.points[v]);
+  for (int f = 0; f < cappedCount; ++f)
+    decimated.featureIds.push_back(f);
   const CollapsibleMesh& mesh = decimator.mesh();
   for (int t = 0; t < mesh.triangleCount(); ++t)
   {
     if (!mesh.alive(t))
       continue;
     const Triangle& tri = mesh.triangle(t);
-    domain.mesh.triangles.push_back({ featureOfVertex[tri[0]], featureOfVertex[tri[1]], featureOfVertex[tri[2]] });
+    decimated.mesh.triangles.push_back({ featureOfVertex[tri[0]], featureOfVertex[tri[1]], featureOfVertex[tri[2]] });
   }
-  if (Status s = checkBaseDomain(domain, static_cast<int>(landmarks.size())); !s.ok())
-    return Status::error("internal error, the decimated base domain is invalid: " + s.message());
+  if (capped.loops.empty())
+  {
+    domain = std::move(decimated);
+    if (Status s = checkBaseDomain(domain, featureCount); !s.ok())
+      return Status::error("internal error, the decimated base domain is invalid: " + s.message());
+  }
+  else
+  {
+    if (Status s = checkBaseDomain(decimated, cappedCount); !s.ok())
+      return Status::error("internal error: the decimated base domain (its holes capped) is invalid: " + s.message());
+    if (Status s = removeCaps(decimated, capped, featureOfVertex, featureCount, domain); !s.ok())
+      return s;
+  }
   measureQuality(domain, out);
   if (options.progress)
     options.progress(1.0);

@@ -44,11 +44,44 @@ struct BaseDomainBuilderReport
 /// its surface position. O(n log n). Paper §2 lets the base domain be given
 /// or "found automatically"; this decimation is our own (beyond the paper).
 ///
-/// Fails (Status), naming the problem, on a surface that fails
-/// `checkSurface()` (not a closed genus-0 manifold with sound geometry), on
-/// invalid landmarks (`validateLandmarks()`), with fewer than 4 landmarks,
-/// and when no remaining vertex can be removed without breaking the
-/// topology (not expected: folding collapses and flips are tried first).
+/// Surfaces with boundaries (beyond the paper, whose future work lists
+/// them; Documentation/algorithm.md, "Surfaces with boundaries"): each
+/// boundary loop (`boundaryLoops()`) is closed by a fan from a new vertex
+/// (`capLoop()`), which is kept like a landmark; a non-landmark vertex of a
+/// loop only collapses into one of its two neighbours along the loop,
+/// nothing collapses into a cap's centre, and no edge of a cap (a spoke or
+/// a loop edge) is flipped. Once only the landmarks and the centres are
+/// left, the centres and their triangles are removed: `domain` is then a
+/// triangulated sphere with as many holes as the surface, whose boundary
+/// loops are exactly the landmarks on the surface's loops, in the same
+/// cyclic order (both with the surface on the left), and whose triangles
+/// are oriented like the surface's. `closeBaseDomain()` (layout) closes it
+/// again for the later stages. The report's angles and shapes are those of
+/// `domain`'s own triangles.
+///
+/// \pre `surface` is a closed genus-0 triangle surface, or a genus-0
+///      surface with boundary loops each passing through at least 3
+///      landmarks; `landmarks` are distinct vertices of it, none missing.
+///
+/// Fails (Status), naming the problem:
+/// - on a closed surface that fails `checkSurface()` (not a closed genus-0
+///   manifold with sound geometry), and with fewer than 4 landmarks;
+/// - on an open surface (`checkSurface()` finds boundary edges): when
+///   triangles disagree in orientation ("inconsistent orientation"), its
+///   boundary is pinched or a loop encloses no area (`boundaryLoops()`,
+///   `capLoop()`), the surface with its loops capped fails
+///   `checkSurface()` (the message ends "(the surface with its boundary
+///   loops capped)": e.g. several components, or handles), and when a loop
+///   passes through fewer than 3 landmarks ("open surface: the boundary
+///   loop through vertex V ... passes through N landmarks, but every
+///   boundary loop needs at least 3");
+/// - on invalid or missing landmarks (`validateLandmarks()`);
+/// - when no remaining vertex can be removed without breaking the topology
+///   (not expected: folding collapses and flips are tried first), and with
+///   "internal error: ..." when the result does not fit the surface (not
+///   expected either: for an open surface, a cap's centre whose triangles
+///   are not a fan over its loop's landmarks in order, or boundary loops
+///   of `domain` other than those).
 Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmarks, BaseDomain& domain,
   const BaseDomainBuilderOptions& options = {}, BaseDomainBuilderReport* report = nullptr);
 

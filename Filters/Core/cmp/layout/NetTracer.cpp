@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <string>
 
 namespace cmp
 {
@@ -145,6 +146,8 @@ public:
   {
     if (Status s = net_.mesh.build(surface); !s.ok())
       return s;
+    if (Status s = checkPresetCurves(landmarks); !s.ok())
+      return s;
     if (Status s = computeFeatureCoordinates(surface, landmarks, coordinates_, options_.featureCoordinates); !s.ok())
       return s;
     const int baseVertices = domain_.mesh.vertexCount();
@@ -165,7 +168,19 @@ public:
     tentative_.assign(edgeCount, {});
     traced_.assign(edgeCount, 0);
     penalties_.assign(edgeCount, 0);
-    makeRoom(net_.landmarkVertex);
+    // Preset curves first, all of them, then room round them all at once:
+    // splitting round one before the next is in would split the next's edges.
+    std::vector<int> crowded = net_.landmarkVertex;
+    for (std::size_t i = 0; i < options_.presetCurves.size(); ++i)
+    {
+      const int e = presetEdge_[i];
+      net_.curves[e] = options_.presetCurves[i].vertices;
+      if (featureOf_[base_.edges[e][0]] != options_.presetCurves[i].from)
+        std::reverse(net_.curves[e].begin(), net_.curves[e].end());
+      occupy(e);
+      crowded.insert(crowded.end(), net_.curves[e].begin(), net_.curves[e].end());
+    }
+    makeRoom(crowded);
 
     if (Status s = traceAll(); !s.ok())
       return s;
@@ -182,14 +197,91 @@ private:
     bool operator>(const Candidate& other) const { return priority > other.priority; }
   };
 
+  /// Checks the preset curves against the surface and the base domain and
+  /// finds the base edge of each (`presetEdge_`).
+  Status checkPresetCurves(const LandmarkList& landmarks)
+  {
+    const int features = static_cast<int>(landmarks.size());
+    const int vertices = net_.mesh.vertexCount();
+    std::vector<int> baseVertexOf(features, -1);
+    for (int bv = 0; bv < domain_.mesh.vertexCount(); ++bv)
+      if (domain_.featureIds[bv] >= 0 && domain_.featureIds[bv] < features)
+        baseVertexOf[domain_.featureIds[bv]] = bv;
+    std::vector<char> isLandmark(vertices, 0);
+    for (int v : landmarks)
+      if (v >= 0 && v < vertices)
+        isLandmark[v] = 1;
+    std::vector<int> owner(vertices, -1); // preset curve holding an inner vertex
+    std::vector<int> seenIn(vertices, -1); // last preset curve through a vertex
+    std::vector<int> presetOfEdge(base_.edges.size(), -1);
+    presetEdge_.clear();
+    for (std::size_t i = 0; i < options_.presetCurves.size(); ++i)
+    {
+      const PresetCurve& curve = options_.presetCurves[i];
+      const std::string name = "preset curve " + std::to_string(i) + " (features " + std::to_string(curve.from) +
+        " to " + std::to_string(curve.to) + ")";
+      for (int f : { curve.from, curve.to })
+      {
+        if (f < 0 || f >= features)
+          return Status::error(name + ": feature " + std::to_string(f) + " is out of range (0.." +
+            std::to_string(features - 1) + ")");
+        if (baseVertexOf[f] < 0)
+          return Status::error(name + ": feature " + std::to_string(f) + " has no base vertex");
+      }
+      const int e = base_.edgeBetween(baseVertexOf[curve.from], baseVertexOf[curve.to]);
+      if (e < 0)
+        return Status::error(name + ": no edge of the base domain joins the two features");
+      if (presetOfEdge[e] >= 0)
+        return Status::error(name + ": preset curve " + std::to_string(presetOfEdge[e]) +
+          " is already the curve of that base edge");
+      presetOfEdge[e] = static_cast<int>(i);
+      const std::vector<int>& path = curve.vertices;
+      if (path.size() < 2)
+        return Status::error(name + ": needs at least 2 vertices (it has " + std::to_string(path.size()) + ")");
+      for (int v : path)
+        if (v < 0 || v >= vertices)
+          return Status::error(name + ": vertex " + std::to_string(v) + " is out of range (the surface has " +
+            std::to_string(vertices) + ")");
+      if (path.front() != landmarks[curve.from] || path.back() != landmarks[curve.to])
+        return Status::error(name + ": does not run from the landmark of feature " + std::to_string(curve.from) +
+          " (vertex " + std::to_string(landmarks[curve.from]) + ") to that of feature " + std::to_string(curve.to) +
+          " (vertex " + std::to_string(landmarks[curve.to]) + ")");
+      for (std::size_t k = 0; k + 1 < path.size(); ++k)
+        if (net_.mesh.findHalfedge(path[k], path[k + 1]) < 0)
+          return Status::error(name + ": vertices " + std::to_string(path[k]) + " and " +
+            std::to_string(path[k + 1]) + " are not joined by a mesh edge");
+      for (int v : path)
+      {
+        if (seenIn[v] == static_cast<int>(i))
+          return Status::error(name + ": vertex " + std::to_string(v) + " repeats");
+        seenIn[v] = static_cast<int>(i);
+      }
+      for (std::size_t k = 1; k + 1 < path.size(); ++k)
+      {
+        const int v = path[k];
+        if (isLandmark[v])
+          return Status::error(name + ": inner vertex " + std::to_string(v) + " is a landmark");
+        if (owner[v] >= 0)
+          return Status::error(name + ": inner vertex " + std::to_string(v) + " is on preset curve " +
+            std::to_string(owner[v]) + " too");
+        owner[v] = static_cast<int>(i);
+      }
+      presetEdge_.push_back(e);
+    }
+    return {};
+  }
+
   /// Spanning tree of the base domain first, then the rest; shortest
   /// tentative curve first; invalid ones re-traced, swirling ones postponed.
+  /// Preset curves are in already.
   Status traceAll()
   {
     const int edgeCount = static_cast<int>(base_.edges.size());
     std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
     for (int e = 0; e < edgeCount; ++e)
     {
+      if (traced_[e])
+        continue; // preset
       if (Status s = retrace(e); !s.ok())
         return s;
       queue.push({ curveLength(net_.mesh, tentative_[e]), e });
@@ -204,6 +296,16 @@ private:
     };
     int treeEdges = 0, inserted = 0;
     const int treeSize = domain_.mesh.vertexCount() - 1;
+    for (int e : presetEdge_)
+    {
+      ++inserted;
+      const int ra = root(base_.edges[e][0]), rb = root(base_.edges[e][1]);
+      if (ra != rb)
+      {
+        component[ra] = rb;
+        ++treeEdges;
+      }
+    }
     std::vector<int> deferred;
     while (!queue.empty())
     {
@@ -402,6 +504,13 @@ private:
   void insert(int e)
   {
     net_.curves[e] = tentative_[e];
+    occupy(e);
+    makeRoom(net_.curves[e]);
+  }
+
+  /// Marks the curve of `e` traced: its vertices occupied, its edges tagged.
+  void occupy(int e)
+  {
     traced_[e] = 1;
     const auto& curve = net_.curves[e];
     for (std::size_t i = 0; i < curve.size(); ++i)
@@ -414,7 +523,6 @@ private:
         net_.mesh.setTag(net_.mesh.opposite(h), e);
       }
     }
-    makeRoom(curve);
   }
 
   /// Splits every non-curve edge between two occupied vertices around
@@ -441,6 +549,7 @@ private:
   std::vector<std::vector<int>> tentative_;
   std::vector<char> traced_;
   std::vector<int> penalties_;
+  std::vector<int> presetEdge_; // base edge of each preset curve
   BrushFire fire_;
 };
 

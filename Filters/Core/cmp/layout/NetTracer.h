@@ -17,6 +17,15 @@
 namespace cmp
 {
 
+/// \brief A curve given by the caller instead of traced: from the landmark of
+///        feature `from` to that of feature `to`, as surface vertex ids.
+struct PresetCurve
+{
+  int from = -1;             ///< Feature whose landmark the curve starts at.
+  int to = -1;               ///< Feature whose landmark it ends at.
+  std::vector<int> vertices; ///< Vertices of the input surface, `landmarks[from]` first, `landmarks[to]` last.
+};
+
 /// \brief Tuning of `traceFeatureNet()`.
 struct NetTracerOptions
 {
@@ -36,6 +45,26 @@ struct NetTracerOptions
   double penaltyFactor = 2.0;
   /// \brief Called with the fraction of curves inserted, in [0, 1].
   std::function<void(double)> progress;
+  /// \brief Curves that are not traced but taken as given (the caps that
+  ///        close a surface's boundary loops: their curves must stay on the
+  ///        boundary and the cap). Each becomes, exactly, the curve of the
+  ///        base edge between the base vertices of its two features (its
+  ///        vertex list reversed if that edge runs the other way); all are
+  ///        inserted before any curve is traced, and the traced curves leave
+  ///        room for them and respect their order round the landmarks.
+  ///        Vertex ids are the input surface's: splits made for room only
+  ///        append vertices. The caller answers for the cyclic order of the
+  ///        preset curves round each landmark (it must be the base
+  ///        domain's) and for their not enclosing a landmark away from the
+  ///        other curves; otherwise labelling the patches fails ("internal
+  ///        error"). Fails (Status), naming the curve and the problem, when
+  ///        a feature is out of range or has no base vertex, no base edge
+  ///        joins the two, the list has fewer than 2 vertices, does not
+  ///        start and end at the two landmarks, holds a vertex out of
+  ///        range, two consecutive vertices are not joined by a mesh edge,
+  ///        a vertex repeats or an inner one is a landmark, or two preset
+  ///        curves share an inner vertex or a base edge.
+  std::vector<PresetCurve> presetCurves;
 };
 
 /// \brief Figures about a tracing run.
@@ -68,7 +97,8 @@ struct NetTracerReport
 ///      `domain.featureIds` names the feature of each base vertex.
 /// Fails (Status), naming the problem, when `surface` fails
 /// `checkSurface()`, the landmarks are invalid (`validateLandmarks()`) or
-/// not one per base vertex, `domain` fails `checkBaseDomain()` or the
+/// not one per base vertex, `domain` fails `checkBaseDomain()`, a preset
+/// curve is invalid (`NetTracerOptions::presetCurves`) or the
 /// harmonic parameterization cannot be solved; messages starting with
 /// "internal error" (a curve not found, a net that cannot be labelled) are
 /// not expected after those checks.

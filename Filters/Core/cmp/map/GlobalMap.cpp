@@ -1,5 +1,6 @@
 #include <cmp/map/GlobalMap.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -52,16 +53,21 @@ double equilateralSide(double area, int triangles)
   return std::sqrt(4.0 * area / (std::sqrt(3.0) * triangles));
 }
 
-/// The sides of L0's triangles drawn with `shapes` and `area` in all:
+/// The sides of L0's triangles drawn with `shapes` and `area` in all the
+/// triangles not marked in `fixed` (empty: none):
 /// `lengths[t][k]` the side between corners k and k + 1 of triangle t.
 Status targetSides(const BaseDomain& domain, double area, GlobalMapOptions::TargetShapes shapes,
-  std::vector<std::array<double, 3>>& lengths)
+  const std::vector<char>& fixed, std::vector<std::array<double, 3>>& lengths)
 {
   const int count = domain.mesh.triangleCount();
+  const auto isFixed = [&](int t) { return !fixed.empty() && fixed[t]; };
   lengths.assign(count, { { 0.0, 0.0, 0.0 } });
   if (shapes == GlobalMapOptions::TargetShapes::Equilateral)
   {
-    const double side = equilateralSide(area, count);
+    int free = 0;
+    for (int t = 0; t < count; ++t)
+      free += isFixed(t) ? 0 : 1;
+    const double side = equilateralSide(area, free);
     for (auto& l : lengths)
       l = { { side, side, side } };
     return {};
@@ -76,7 +82,8 @@ Status targetSides(const BaseDomain& domain, double area, GlobalMapOptions::Targ
     if (!(twice > 1e-6 * longest * longest))
       return Status::error("global map: triangle " + std::to_string(t) +
         " of L0 is too thin to draw its own shape (TargetShapes: use equilateral)");
-    own += 0.5 * twice;
+    if (!isFixed(t))
+      own += 0.5 * twice;
     for (int k = 0; k < 3; ++k)
       lengths[t][k] = (domain.mesh.points[tri[(k + 1) % 3]] - domain.mesh.points[tri[k]]).norm();
   }
@@ -384,8 +391,26 @@ public:
       static_cast<int>(net.landmarkVertex.size()) != baseVertices ||
       static_cast<int>(net.curves.size()) != baseEdges)
       return Status::error("global map: the layout and its parameterization do not belong together");
+    const std::vector<char>& fixedPatches = options.fixedPatches;
+    if (!fixedPatches.empty() && static_cast<int>(fixedPatches.size()) != baseTriangles)
+      return Status::error("global map: fixedPatches has " + std::to_string(fixedPatches.size()) +
+        " entries, but L0 has " + std::to_string(baseTriangles) + " triangles (give none or one per triangle)");
+    int freeBaseTriangles = baseTriangles;
+    for (char fixed : fixedPatches)
+      freeBaseTriangles -= fixed ? 1 : 0;
+    if (freeBaseTriangles == 0)
+      return Status::error("global map: fixedPatches fixes every patch of L0, so nothing is left to map");
+    fixedTriangle_.assign(triangles, 0);
+    if (!fixedPatches.empty())
+      for (int t = 0; t < triangles; ++t)
+      {
+        const int patch = net.patchOfTriangle[t];
+        if (!mesh.isRemoved(t) && patch >= 0 && patch < baseTriangles)
+          fixedTriangle_[t] = fixedPatches[patch] ? 1 : 0;
+      }
 
-    // The surface's metric: each triangle's area and inverse edge matrix.
+    // The surface's metric: each triangle's area and inverse edge matrix
+    // (none for a fixed patch's, which has no say in the energy or the area).
     area_.assign(triangles, 0.0);
     inverseEdges_.assign(triangles, Mat2::Zero());
     used_.assign(n, 0);
@@ -397,6 +422,8 @@ public:
       const Triangle& tri = mesh.triangle(t);
       for (int v : tri)
         used_[v] = 1;
+      if (fixedTriangle_[t])
+        continue;
       const Vec3 e1 = mesh.point(tri[1]) - mesh.point(tri[0]), e2 = mesh.point(tri[2]) - mesh.point(tri[0]);
       const double twiceArea = e1.cross(e2).norm();
       const double length = e1.norm();
@@ -410,13 +437,13 @@ public:
     }
     if (!(totalArea_ > 0.0))
       return Status::error("global map: the surface has no area");
-    side_ = equilateralSide(totalArea_, baseTriangles);
-    baseTriangles_ = baseTriangles;
+    side_ = equilateralSide(totalArea_, freeBaseTriangles);
+    baseTriangles_ = freeBaseTriangles;
     if (options.curvatureDensity > 0.0)
       inflateCurvedParts(options.curvatureDensity, options.curvatureDensityCap);
 
     std::vector<std::array<double, 3>> lengths;
-    if (Status s = targetSides(domain, totalArea_, options.targetShapes, lengths); !s.ok())
+    if (Status s = targetSides(domain, totalArea_, options.targetShapes, fixedPatches, lengths); !s.ok())
       return s;
     if (Status s = geometry_.build(domain, std::move(lengths)); !s.ok())
       return s;
@@ -478,7 +505,8 @@ public:
 
     // The surface cut along the tree's curves.
     std::vector<char> cut(mesh.halfedgeCount(), 0);
-    std::vector<int> curveOf(n, -1);
+    std::vector<int>& curveOf = curveOf_;
+    curveOf.assign(n, -1);
     for (int e = 0; e < baseEdges; ++e)
     {
       const std::vector<int>& curve = net.curves[e];
@@ -496,6 +524,73 @@ public:
     pinned_.assign(n, 0);
     for (int v : net.landmarkVertex)
       pinned_[v] = 1;
+    // A fixed patch's vertices keep their start places (every copy of one
+    // on a cut curve its own), so the curves round the patch stay.
+    for (int t = 0; t < triangles; ++t)
+      if (fixedTriangle_[t])
+        for (int v : mesh.triangle(t))
+          pinned_[v] = 1;
+    // ... but for those on a curve between a fixed and a free patch: they
+    // slide along its base edge, drawn in the free patch (one variable
+    // each, its place along the edge), so the curve stays on the edge while
+    // the map spreads its vertices there as it needs.
+    sliding_.assign(n, 0);
+    slideEdge_.assign(n, -1);
+    slidePatch_.assign(n, -1);
+    if (!fixedPatches.empty())
+    {
+      std::vector<char> landmark(n, 0);
+      for (int v : net.landmarkVertex)
+        landmark[v] = 1;
+      for (int e = 0; e < baseEdges; ++e)
+      {
+        const int left = net.leftTriangle[e], right = net.rightTriangle[e];
+        if ((fixedPatches[left] != 0) == (fixedPatches[right] != 0))
+          continue;
+        const std::vector<int>& curve = net.curves[e];
+        for (std::size_t i = 1; i + 1 < curve.size(); ++i)
+        {
+          const int v = curve[i];
+          if (landmark[v] || curveOf[v] != e)
+            continue;
+          sliding_[v] = 1;
+          slideEdge_[v] = e;
+          slidePatch_[v] = fixedPatches[left] ? right : left;
+        }
+      }
+      // Only between its edge's two patches (a layout's curve vertex always
+      // is): else it stays pinned.
+      for (int t = 0; t < triangles; ++t)
+        if (!mesh.isRemoved(t))
+          for (int v : mesh.triangle(t))
+            if (sliding_[v])
+            {
+              const int e = slideEdge_[v], patch = net.patchOfTriangle[t];
+              if (patch != net.leftTriangle[e] && patch != net.rightTriangle[e])
+                sliding_[v] = 0;
+            }
+      for (int v = 0; v < n; ++v)
+      {
+        if (sliding_[v])
+          pinned_[v] = 0;
+        else
+          slideEdge_[v] = slidePatch_[v] = -1;
+      }
+    }
+    // A fixed patch's triangle with a sliding corner is kept unflipped like
+    // every free one (it still has no say in the energy).
+    watched_.assign(triangles, 0);
+    slideTriangles_.clear();
+    for (int t = 0; t < triangles; ++t)
+    {
+      if (mesh.isRemoved(t))
+        continue;
+      watched_[t] = fixedTriangle_[t] ? 0 : 1;
+      for (int v : mesh.triangle(t))
+        watched_[t] = sliding_[v] ? 1 : watched_[t];
+      if (fixedTriangle_[t] && watched_[t])
+        slideTriangles_.push_back(t);
+    }
     net_ = &net;
     domain_ = &domain;
 
@@ -600,6 +695,8 @@ public:
     x_.resize(2 * variables_);
     home_.assign(n, -1);
     homeDrawing_.assign(n, Drawing{});
+    slideFrom_.assign(n, Vec2::Zero());
+    slideAlong_.assign(n, Vec2::Zero());
     for (int v = 0; v < n; ++v)
       if (variable_[v] >= 0)
       {
@@ -607,6 +704,34 @@ public:
         x_.segment<2>(2 * variable_[v]) = copyPosition_[c];
         home_[v] = copyPatch_[c];
         homeDrawing_[v] = drawing_[copyPatch_[c]];
+        if (!sliding_[v])
+          continue;
+        // A sliding vertex's home is its free patch, drawn in the plane of
+        // its first copy (across its edge if that copy is on the fixed
+        // side: the edge's ends are then the first copy's own); its
+        // variable (t, 0), its place a + t (b - a), a and b its edge's ends.
+        const int e = slideEdge_[v], patch = slidePatch_[v];
+        if (copyPatch_[c] != patch)
+        {
+          const int k = baseEdgeCorner(domain, copyPatch_[c], e);
+          int other = -1;
+          if (k < 0)
+            return Status::error("global map: vertex " + std::to_string(v) + " is not beside its curve's edge");
+          homeDrawing_[v] = geometry_.unfold(copyPatch_[c], drawing_[copyPatch_[c]], k, other);
+          if (other != patch)
+            return Status::error("global map: vertex " + std::to_string(v) + " is not beside its curve's edge");
+        }
+        home_[v] = patch;
+        const int ka = baseCorner(domain, patch, net.baseEdges[e][0]), kb = baseCorner(domain, patch, net.baseEdges[e][1]);
+        if (ka < 0 || kb < 0)
+          return Status::error("global map: vertex " + std::to_string(v) + " is not beside its curve's edge");
+        slideFrom_[v] = homeDrawing_[v][ka];
+        slideAlong_[v] = homeDrawing_[v][kb] - homeDrawing_[v][ka];
+        const double t = (copyPosition_[c] - slideFrom_[v]).dot(slideAlong_[v]) / slideAlong_[v].squaredNorm();
+        if (!(t > 0.0 && t < 1.0) ||
+          std::abs(cross2(slideAlong_[v], copyPosition_[c] - slideFrom_[v])) > 1e-6 * side_ * slideAlong_[v].norm())
+          return Status::error("global map: vertex " + std::to_string(v) + " of a fixed patch's curve is off its edge");
+        x_.segment<2>(2 * variable_[v]) = Vec2(t, 0.0);
       }
     // Each triangle's share of the energy: its area, more near a landmark.
     weight_ = area_;
@@ -687,18 +812,68 @@ public:
     const auto found = edgeOf_.find(static_cast<long long>(std::min(a, b)) * baseVertices_ + std::max(a, b));
     return found == edgeOf_.end() ? -1 : found->second;
   }
+  /// The corner of base triangle `patch` at base vertex `vertex`, -1 if none.
+  static int baseCorner(const BaseDomain& domain, int patch, int vertex)
+  {
+    const Triangle& tri = domain.mesh.triangles[patch];
+    for (int k = 0; k < 3; ++k)
+      if (tri[k] == vertex)
+        return k;
+    return -1;
+  }
+  /// The side k (corners k, k + 1) of base triangle `patch` that is base
+  /// edge `e`, -1 if none.
+  int baseEdgeCorner(const BaseDomain& domain, int patch, int e) const
+  {
+    const Triangle& tri = domain.mesh.triangles[patch];
+    for (int k = 0; k < 3; ++k)
+      if (baseEdge(tri[k], tri[(k + 1) % 3]) == e)
+        return k;
+    return -1;
+  }
   double totalArea() const { return totalArea_; }
   const Eigen::VectorXd& x() const { return x_; }
+  /// Whether some vertex slides along its edge beside a fixed triangle.
+  bool slides() const { return !slideTriangles_.empty(); }
+
+  /// Free vertex v's place in the plane of its first copy for the variables
+  /// `x`, and its direction for the step `d`: the variable itself, or for a
+  /// sliding vertex a + t (b - a), t its variable's first entry (the second
+  /// has no say).
+  Vec2 place(int v, const Eigen::VectorXd& x) const
+  {
+    const int i = 2 * variable_[v];
+    if (!sliding_[v])
+      return x.segment<2>(i);
+    return slideFrom_[v] + x(i) * slideAlong_[v];
+  }
+  Vec2 placeStep(int v, const Eigen::VectorXd& d) const
+  {
+    const int i = 2 * variable_[v];
+    if (!sliding_[v])
+      return d.segment<2>(i);
+    return d(i) * slideAlong_[v];
+  }
+  /// d place / d variable: the identity, or for a sliding vertex the edge
+  /// (b - a) in its first column and zero in its second.
+  Mat2 placeJacobian(int v) const
+  {
+    if (!sliding_[v])
+      return Mat2::Identity();
+    Mat2 j = Mat2::Zero();
+    j.col(0) = slideAlong_[v];
+    return j;
+  }
 
   /// Corner h's place for the variables `x` (its copy moved), and its
-  /// direction for the step `d` (zero for a landmark).
+  /// direction for the step `d` (zero for a pinned vertex).
   Vec2 corner(int h, const Eigen::VectorXd& x) const
   {
     const int c = copyOfCorner_[h];
     const int v = copyVertex_[c];
     if (pinned_[v])
       return copyPosition_[c];
-    return motion_[c](x.segment<2>(2 * variable_[v]));
+    return motion_[c](place(v, x));
   }
   Vec2 cornerStep(int h, const Eigen::VectorXd& d) const
   {
@@ -706,7 +881,7 @@ public:
     const int v = copyVertex_[c];
     if (pinned_[v])
       return Vec2::Zero();
-    return motion_[c].rotation * d.segment<2>(2 * variable_[v]);
+    return motion_[c].rotation * placeStep(v, d);
   }
 
   Mat2 jacobian(int t, const Eigen::VectorXd& x) const
@@ -733,11 +908,16 @@ public:
         continue;
       if (area_[t] > 0.0)
         sum += weight_[t] * density(jacobian(t, x));
-      else if (flipped(t, x))
+      else if (watched_[t] && flipped(t, x)) // a fixed patch's corners are pinned but for sliding ones
         return kInfinity;
       if (!std::isfinite(sum))
         return kInfinity;
     }
+    // A sliding vertex between its edge's ends (its neighbours along the
+    // edge keep it there already: they would flip first).
+    for (std::size_t v = 0; v < sliding_.size(); ++v)
+      if (sliding_[v] && !(x(2 * variable_[v]) > 0.0 && x(2 * variable_[v]) < 1.0))
+        return kInfinity;
     return sum;
   }
 
@@ -775,6 +955,30 @@ public:
     return bound;
   }
 
+  /// The sliding vertices that the step `d` would carry past where one of
+  /// their fixed triangles flattens (before the full step): per variable
+  /// entry (a sliding vertex's t), the fraction of its step it may take,
+  /// half the way to the first such triangle.
+  void blockedSlides(const Eigen::VectorXd& d, std::map<int, double>& fraction) const
+  {
+    fraction.clear();
+    for (int t : slideTriangles_)
+    {
+      const Vec2 p0 = corner(3 * t, x_), p1 = corner(3 * t + 1, x_), p2 = corner(3 * t + 2, x_);
+      const Vec2 d0 = cornerStep(3 * t, d), d1 = cornerStep(3 * t + 1, d), d2 = cornerStep(3 * t + 2, d);
+      const double bound = flipBound(p1 - p0, p2 - p0, d1 - d0, d2 - d0);
+      if (!(bound < 1.0))
+        continue;
+      for (int v : mesh_->triangle(t))
+        if (sliding_[v])
+        {
+          const auto [at, added] = fraction.insert({ 2 * variable_[v], 0.5 * bound });
+          if (!added)
+            at->second = std::min(at->second, 0.5 * bound);
+        }
+    }
+  }
+
   /// Gradient and projected Hessian at the current variables.
   void assemble(Eigen::VectorXd& gradient)
   {
@@ -802,7 +1006,9 @@ public:
         }
       const Eigen::Matrix<double, 6, 1> gp = weight_[t] * b.transpose() * g;
       const Eigen::Matrix<double, 6, 6> hp = weight_[t] * b.transpose() * hf * b;
-      std::array<const Mat2*, 3> rotation{};
+      // d corner / d variable: the copy's rotation after the place's own
+      // (J^T g and J^T H J reduce a sliding vertex to its edge).
+      std::array<Mat2, 3> chain;
       std::array<int, 3> var{};
       for (int k = 0; k < 3; ++k)
       {
@@ -810,18 +1016,19 @@ public:
         const int c = copyOfCorner_[h];
         const int v = copyVertex_[c];
         var[k] = variable_[v];
-        rotation[k] = &motion_[c].rotation;
+        if (var[k] >= 0)
+          chain[k] = motion_[c].rotation * placeJacobian(v);
       }
       for (int a = 0; a < 3; ++a)
       {
         if (var[a] < 0)
           continue;
-        gradient.segment<2>(2 * var[a]) += rotation[a]->transpose() * gp.segment<2>(2 * a);
+        gradient.segment<2>(2 * var[a]) += chain[a].transpose() * gp.segment<2>(2 * a);
         for (int bb = 0; bb < 3; ++bb)
         {
           if (var[bb] < 0)
             continue;
-          const Mat2 block = rotation[a]->transpose() * hp.block<2, 2>(2 * a, 2 * bb) * *rotation[bb];
+          const Mat2 block = chain[a].transpose() * hp.block<2, 2>(2 * a, 2 * bb) * chain[bb];
           const int* slot = &slots_[36 * t + 12 * a + 4 * bb];
           for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j)
@@ -837,6 +1044,11 @@ public:
     const double shift = 1e-9 * trace / std::max(1, 2 * variables_) + 1e-300;
     for (int i = 0; i < 2 * variables_; ++i)
       values[diagonal_[i]] += shift;
+    // A sliding vertex's second entry has no say (a zero row and column, a
+    // zero gradient): a diagonal of the matrix's scale keeps its step 0.
+    for (std::size_t v = 0; v < sliding_.size(); ++v)
+      if (sliding_[v])
+        values[diagonal_[2 * variable_[v] + 1]] = trace / std::max(1, 2 * variables_) + 1e-300;
   }
 
   const Eigen::SparseMatrix<double>& hessian() const { return hessian_; }
@@ -848,8 +1060,8 @@ public:
     for (std::size_t v = 0; v < variable_.size(); ++v)
     {
       const int i = variable_[v];
-      if (i < 0)
-        continue;
+      if (i < 0 || sliding_[v])
+        continue; // a sliding vertex stays in its free patch, on its edge
       if (!geometry_.walk(home_[v], homeDrawing_[v], x_.segment<2>(2 * i), next.segment<2>(2 * i)))
         return false;
     }
@@ -995,6 +1207,8 @@ public:
             const int v = mesh.triangle(t)[k];
             if (landmarkOf[v] >= 0 || onEdge[v] >= 0)
               continue;
+            if ((pinned_[v] || sliding_[v]) && curveOf_[v] != e)
+              continue; // a fixed patch's vertex lies on its own curve only
             const double f = cross2(d, cornerAt[t][k] - a) / d.norm();
             const double along = (cornerAt[t][k] - a).dot(d) / d.squaredNorm();
             if (std::abs(f) < snap && along > 0.0 && along < 1.0)
@@ -1022,7 +1236,10 @@ public:
         {
           const bool lies = landmarkOf[v] >= 0 ? incident(landmarkOf[v], e) : onEdge[v] == e;
           on += lies ? 1 : 0;
-          if (lies && landmarkOf[v] < 0 && (farthest < 0 || onEdgeOff[v] > onEdgeOff[farthest]))
+          // A pinned or sliding vertex lies on its own curve: never the one
+          // to leave off.
+          const auto distance = [&](int u) { return pinned_[u] || sliding_[u] ? -1.0 : onEdgeOff[u]; };
+          if (lies && landmarkOf[v] < 0 && (farthest < 0 || distance(v) > distance(farthest)))
             farthest = v;
         }
         if (on == 3)
@@ -1413,6 +1630,18 @@ public:
     {
       if (variable_[v] < 0)
         continue;
+      if (sliding_[v])
+      {
+        // On its edge exactly: (1 - t, t) at its ends, 0 at the third corner.
+        const int e = slideEdge_[v], patch = slidePatch_[v];
+        const double t = x_(2 * variable_[v]);
+        std::array<double, 3> b{ 0.0, 0.0, 0.0 };
+        b[baseCorner(*domain_, patch, net_->baseEdges[e][0])] = 1.0 - t;
+        b[baseCorner(*domain_, patch, net_->baseEdges[e][1])] = t;
+        result.baseTriangle[v] = patch;
+        result.baseCoordinates[v] = b;
+        continue;
+      }
       std::array<double, 3> b = barycentricIn(homeDrawing_[v], x_.segment<2>(2 * variable_[v]));
       double sum = 0.0;
       for (double& c : b)
@@ -1489,11 +1718,20 @@ private:
   std::vector<Mat2> inverseEdges_;
   std::vector<char> used_;
   std::vector<char> pinned_;
+  std::vector<char> fixedTriangle_;   ///< Per triangle: in a fixed patch (its corners pinned or sliding).
+  std::vector<char> watched_;         ///< Per triangle: kept unflipped (not fixed, or with a sliding corner).
+  std::vector<int> slideTriangles_;   ///< The fixed triangles with a sliding corner.
+  std::vector<char> sliding_;         ///< Per vertex: on a curve between a fixed and a free patch, sliding along its edge.
+  std::vector<int> slideEdge_;        ///< Per sliding vertex: its curve's base edge...
+  std::vector<int> slidePatch_;       ///< ... the free patch beside it, its home...
+  std::vector<Vec2> slideFrom_;       ///< ... the edge's first end (net.baseEdges order) in its home drawing...
+  std::vector<Vec2> slideAlong_;      ///< ... and the edge from there to its second end.
+  std::vector<int> curveOf_;          ///< Per vertex: the curve it lies inside, -1 if none.
   std::vector<Drawing> drawing_;      ///< Per base triangle, in the cut L0's plane.
   std::vector<int> copyOfCorner_;     ///< Per halfedge: the copy of its start vertex in its triangle.
   std::vector<int> copyVertex_;
   std::vector<int> copyPatch_;
-  std::vector<Vec2> copyPosition_;    ///< Start place (fixed for a landmark's copies).
+  std::vector<Vec2> copyPosition_;    ///< Start place (kept by a pinned vertex's copies).
   std::vector<int> firstCopy_;
   std::vector<Motion> motion_;        ///< Per copy: from its vertex's first copy.
   std::vector<int> variable_;
@@ -1510,6 +1748,69 @@ private:
 
 namespace
 {
+
+/// The Newton step `step` (`solver` holding the factorized Hessian, at
+/// `gradient`) with the sliding vertices it would carry past where a fixed
+/// triangle flattens held to half that way, the rest the Newton step given
+/// theirs (its multipliers from the same factorization: H d = -g + E l,
+/// E the held entries, l so that they take their share). A fixed triangle
+/// has no say in the energy, so nothing in the Newton step keeps a sliding
+/// vertex from it; unheld, the line search (whose largest step is where
+/// the first triangle would flatten) would crawl, every vertex held to that
+/// one vertex's remaining way. Left as it is should the held step not go
+/// downhill.
+template <class Solver>
+void limitSlides(const SeamlessProblem& problem, const Solver& solver, const Eigen::VectorXd& gradient,
+  Eigen::VectorXd& step)
+{
+  const Eigen::VectorXd newton = step;
+  std::vector<int> rows;
+  std::vector<double> target;
+  std::vector<Eigen::VectorXd> columns; // H^-1 e_row
+  std::map<int, double> fraction;
+  for (int round = 0; round < 8; ++round)
+  {
+    problem.blockedSlides(step, fraction);
+    if (fraction.empty())
+      break;
+    for (const auto& [row, share] : fraction)
+    {
+      const auto at = std::find(rows.begin(), rows.end(), row);
+      if (at != rows.end())
+      {
+        target[at - rows.begin()] = share * step(row);
+        continue;
+      }
+      rows.push_back(row);
+      target.push_back(share * step(row));
+      Eigen::VectorXd unit = Eigen::VectorXd::Zero(step.size());
+      unit(row) = 1.0;
+      columns.push_back(solver.solve(unit));
+    }
+    const int m = static_cast<int>(rows.size());
+    Eigen::MatrixXd inverse(m, m);
+    Eigen::VectorXd missing(m);
+    for (int i = 0; i < m; ++i)
+    {
+      for (int j = 0; j < m; ++j)
+        inverse(i, j) = columns[j](rows[i]);
+      missing(i) = target[i] - newton(rows[i]);
+    }
+    const Eigen::VectorXd multipliers = inverse.ldlt().solve(missing);
+    if (!multipliers.allFinite())
+    {
+      step = newton;
+      return;
+    }
+    step = newton;
+    for (int j = 0; j < m; ++j)
+      step += multipliers(j) * columns[j];
+    for (int i = 0; i < m; ++i)
+      step(rows[i]) = target[i];
+  }
+  if (!(gradient.dot(step) < 0.0) || !step.allFinite())
+    step = newton;
+}
 
 /// Projected Newton steps on `problem` until a step gains little.
 Status optimize(SeamlessProblem& problem, const GlobalMapOptions& options, GlobalMapReport& result)
@@ -1534,6 +1835,8 @@ Status optimize(SeamlessProblem& problem, const GlobalMapOptions& options, Globa
     if (solver.info() != Eigen::Success)
       break;
     step = solver.solve(-gradient);
+    if (problem.slides())
+      limitSlides(problem, solver, gradient, step);
     const double slope = gradient.dot(step);
     if (!(slope < 0.0) || !step.allFinite())
       break;

@@ -65,6 +65,37 @@ struct GlobalMapOptions
     BaseDomain
   };
   TargetShapes targetShapes = TargetShapes::Equilateral;
+  /// \brief Patches whose map is kept as it starts, so that their curves
+  ///        stay where they are (the caps that close a surface's boundary
+  ///        loops: the boundary must not move). Empty: none; else one entry
+  ///        per base triangle, non-zero for a fixed patch. Every vertex
+  ///        inside a fixed patch or on a curve between two fixed patches
+  ///        keeps its starting place (on a cut curve, each of its places),
+  ///        also through `freeCurves()`' cut, and so does every landmark.
+  ///        A vertex on the curve of a base edge with a fixed patch on one
+  ///        side only (a boundary stretch) slides along that edge instead:
+  ///        one degree of freedom, its place a + t (b - a) in the free
+  ///        patch's drawing (a, b the edge's ends), t optimized with the
+  ///        rest. It stays on the edge to rounding (its place is reported in
+  ///        the free patch, 0 at the opposite corner) and in its order along
+  ///        it, so the curve keeps its vertices and `freeCurves()` cuts it as
+  ///        it was; only their places along the edge move. Why: a boundary
+  ///        pinned where the start put it (at arc length along the edge)
+  ///        makes the map stretch unevenly along the boundary, and the
+  ///        remesh folds there. The fixed patches' triangles have no say in
+  ///        the energy, in the area the base triangles share (the other
+  ///        patches' (inflated) area over the number of base triangles not
+  ///        fixed) or in the report's figures; those with a sliding corner
+  ///        are kept unflipped by the line search like every other (a cap's
+  ///        triangle would flip where a sliding vertex passed its neighbour
+  ///        along the edge). Having no say, they do not slow a sliding
+  ///        vertex down as it nears them: one the Newton step would carry
+  ///        past where a fixed triangle flattens is held to half that way,
+  ///        the rest taking the Newton step given its, so that the line
+  ///        search is not held to that one vertex's remaining way. Fails
+  ///        (Status, naming `fixedPatches`) when it has neither 0 nor one
+  ///        entry per base triangle, or fixes every patch.
+  std::vector<char> fixedPatches;
 };
 
 /// \brief Checks `options`; the messages name the fields.
@@ -74,7 +105,7 @@ Status checkGlobalMapOptions(const GlobalMapOptions& options);
 struct GlobalMapReport
 {
   int iterations = 0;             ///< Newton steps made.
-  double distortionBefore = 0.0;  ///< Area-weighted mean symmetric Dirichlet energy over its isometric value (1 best), before (against the inflated surface).
+  double distortionBefore = 0.0;  ///< Area-weighted mean symmetric Dirichlet energy over its isometric value (1 best), before (against the inflated surface; fixed patches left out, as below).
   double distortionAfter = 0.0;   ///< The same after.
   double maximumDistortion = 0.0; ///< The largest per-triangle value after.
   int crossingVertices = 0;       ///< Vertices that left their patch's base triangle.
@@ -105,8 +136,9 @@ struct GlobalMapReport
 /// \pre `start` is bijective on every patch (no flipped triangle) and `net`
 ///      is a layout of `domain` (every curve along mesh edges).
 /// Fails, naming the problem, on options out of range
-/// (`checkGlobalMapOptions()`), sizes that disagree, a flipped starting
-/// map or a layout that does not cut into a disk.
+/// (`checkGlobalMapOptions()`; `fixedPatches` of the wrong size or fixing
+/// every patch), sizes that disagree, a flipped starting map or a layout
+/// that does not cut into a disk.
 Status optimizeGlobalMap(const TracedNet& net, const BaseDomain& domain, const PatchParameterization& start,
   PatchParameterization& result, const GlobalMapOptions& options = {}, GlobalMapReport* report = nullptr);
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace cmp
 {
@@ -77,12 +78,16 @@ public:
     report_.areaVariationBefore = areaVariation(patchAreas(net_, patchCount));
 
     const int baseVertices = domain_.mesh.vertexCount();
+    std::vector<char> kept(baseVertices, 0);
+    for (int bv = 0; bv < baseVertices; ++bv)
+      kept[bv] = std::find(options_.keptFeatures.begin(), options_.keptFeatures.end(), domain_.featureIds[bv]) !=
+        options_.keptFeatures.end();
     double length = report_.netLengthBefore;
     for (int sweep = 0; sweep < options_.maxSweeps; ++sweep)
     {
       for (int bv = 0; bv < baseVertices; ++bv)
       {
-        if (!straightenStar(bv, options_.snapTolerance) && !straightenStar(bv, 0.0))
+        if (!kept[bv] && !straightenStar(bv, options_.snapTolerance) && !straightenStar(bv, 0.0))
           ++report_.skippedStars;
         if (options_.progress)
           options_.progress((sweep * baseVertices + bv + 1.0) / (options_.maxSweeps * baseVertices));
@@ -680,6 +685,10 @@ Status straightenNet(const TracedNet& traced, const BaseDomain& domain, Straight
   if (options.maxSweeps < 0 || !(options.tolerance >= 0.0) || !(options.snapTolerance >= 0.0) ||
     !(options.snapTolerance < 0.5))
     return Status::error("straightening options out of range (sweeps >= 0, tolerance >= 0, 0 <= snap < 0.5)");
+  for (int f : options.keptFeatures)
+    if (f < 0 || f >= domain.mesh.vertexCount())
+      return Status::error("straightening options out of range: keptFeatures names feature " + std::to_string(f) +
+        ", the base domain has features 0.." + std::to_string(domain.mesh.vertexCount() - 1));
   NetStraightenerReport localReport;
   NetStraightenerReport& figures = report ? *report : localReport;
   figures = NetStraightenerReport{};

@@ -37,6 +37,15 @@ struct NetStraightenerOptions
   double snapTolerance = 0.1;
   /// \brief Called with the fraction of work done, in [0, 1].
   std::function<void(double)> progress;
+  /// \brief Features whose landmarks' stars are not straightened (the
+  ///        boundary landmarks and cap centres of a closed open surface,
+  ///        whose curves must stay on the boundary and the cap). A curve
+  ///        from such a landmark to another may still be re-traced from the
+  ///        other end's star; a curve between two kept landmarks is never
+  ///        changed (its vertices keep their places and their order; only
+  ///        their numbering follows the rebuilt mesh). Fails (Status) when an
+  ///        id is not a feature of `domain`, naming it.
+  std::vector<int> keptFeatures;
 };
 
 /// \brief Figures about a straightening run.
@@ -88,7 +97,8 @@ struct StraightenedNet
 /// `checkBaseDomain()`, `traced` has not one curve per base edge, one
 /// landmark per base vertex and one patch per triangle ("the net does not
 /// belong to this base domain"), an option is out of range (sweeps >= 0,
-/// tolerance >= 0, 0 <= snap < 0.5) or the traced mesh is not a closed
+/// tolerance >= 0, 0 <= snap < 0.5, `keptFeatures` features of `domain`)
+/// or the traced mesh is not a closed
 /// oriented edge-manifold; messages starting with "internal error" are not
 /// expected. `out` is complete only on success.
 Status straightenNet(const TracedNet& traced, const BaseDomain& domain, StraightenedNet& out,

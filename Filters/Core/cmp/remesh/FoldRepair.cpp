@@ -213,12 +213,17 @@ public:
     for (int t = 0; t < triangleCount(); ++t)
       for (int v : remesh.triangles[t])
         trianglesOf_[v].push_back(t);
+    // A vertex of an open remesh's boundary (more neighbours than
+    // triangles) stays on the surface's boundary: it never moves.
+    boundary_.assign(samples.size(), 0);
+    for (std::size_t v = 0; v < samples.size(); ++v)
+      boundary_[v] = neighbours_[v].size() > trianglesOf_[v].size();
   }
 
   int vertexCount() const { return static_cast<int>(positions_.size()); }
   int triangleCount() const { return static_cast<int>(remesh_.triangles.size()); }
   const Triangle& triangle(int t) const { return remesh_.triangles[t]; }
-  bool pinned(int v) const { return points_[v].triangle < 0; }
+  bool pinned(int v) const { return points_[v].triangle < 0 || boundary_[v]; }
   const Vec3& position(int v) const { return positions_[v]; }
   const Vec3& normal(int v) const { return normals_[v]; }
   const SurfacePoint& point(int v) const { return points_[v]; }
@@ -308,6 +313,7 @@ private:
   std::vector<Vec3> normals_;
   std::vector<std::vector<int>> trianglesOf_;
   std::vector<std::vector<int>> neighbours_;
+  std::vector<char> boundary_; ///< Per vertex: on the remesh's boundary (open surfaces), so pinned.
 };
 
 /// Tries short moves of `v` around its current place (16 directions of its

@@ -129,7 +129,8 @@ std::vector<int> foldsNearLandmarks(
 /// alone. In the other order, single moves lock fans of needles that the
 /// joint moves then cannot undo, and more folds remain (measured in
 /// Documentation/filters/SemiRegularRemesher.md, "Fold repair").
-/// Landmark samples never move. Every moved sample still names the surface
+/// Landmark samples never move, nor do the vertices of an open remesh's
+/// boundary (they stay on the surface's boundary). Every moved sample still names the surface
 /// triangle it lies in. Beyond the paper, whose remesh has no repair.
 ///
 /// \pre `samples` are `remesh` placed on `surface` (`placeOnSurface()` on

@@ -74,6 +74,29 @@ void measureDistance(const BaseDomain& domain, const RemeshModel& model, const T
   figures.distanceSeconds = secondsSince(start);
 }
 
+/// The remesh's landmarks: its base vertices (vertices 0..F-1; an open
+/// L0's caps, whose features come last, are left out).
+int landmarkCount(const SemiRegularMesh& mesh)
+{
+  int count = 0;
+  while (count < mesh.vertexCount() && mesh.levelOfVertex[count] == 0)
+    ++count;
+  return count;
+}
+
+/// `rule`, which never splits a hole's triangle (they are left out).
+SplitRule outsideHoles(SplitRule rule, const std::vector<char>& holeTriangles)
+{
+  if (holeTriangles.empty())
+    return rule;
+  return [rule = std::move(rule), &holeTriangles](const std::array<SurfacePoint, 3>& corners, int level) {
+    const int patch = corners[0].triangle;
+    if (patch >= 0 && patch < static_cast<int>(holeTriangles.size()) && holeTriangles[patch])
+      return false;
+    return rule(corners, level);
+  };
+}
+
 /// The shared connectivity on one model: placed, repaired, measured.
 /// With `far`, also marks the triangles where the placed remesh lies
 /// farther from the model than the adaptive tolerance.
@@ -108,7 +131,7 @@ Status placeModel(const BaseDomain& domain, const SemiRegularMesh& mesh, const s
   figures.minimumAngleDegrees = shape.minimumAngleDegrees;
   figures.meanShapeQuality = shape.meanShapeQuality;
   placed.foldsNearFeature =
-    foldsNearLandmarks(nearestLandmarks, static_cast<int>(domain.featureIds.size()), placed.folded);
+    foldsNearLandmarks(nearestLandmarks, landmarkCount(mesh), placed.folded);
   // An adaptive pass's far triangles come from the distance's own samples.
   if (options.computeDistance || far)
     measureDistance(domain, model, inSpace, figures,
@@ -237,7 +260,7 @@ Status placeCollection(const BaseDomain& domain, const std::vector<RemeshModel>&
     local.sampleRelaxationSeconds = secondsSince(start);
   }
 
-  const std::vector<int> nearestLandmarks = nearestLandmarkOfTriangles(result.mesh, domain.mesh.vertexCount());
+  const std::vector<int> nearestLandmarks = nearestLandmarkOfTriangles(result.mesh, landmarkCount(result.mesh));
   result.models.assign(localModels.size(), RemeshedModel{});
   local.models.assign(localModels.size(), RemeshModelReport{});
   // Each model is placed on its own, the models shared out over threads;
@@ -326,7 +349,11 @@ Status remesh(const BaseDomain& domain, const std::vector<RemeshModel>& localMod
     if (status.ok())
       status = !adaptive ? buildSemiRegularMesh(domain, options.level, connectivity)
         : buildAdaptiveSemiRegularMesh(domain, options.level,
-            refinedSplitRule(flatnessSplitRule(surfaces, options.adaptiveTolerance), marks), connectivity);
+            outsideHoles(refinedSplitRule(flatnessSplitRule(surfaces, options.adaptiveTolerance), marks),
+              options.holeTriangles),
+            connectivity);
+    if (status.ok())
+      status = removeHoleTriangles(domain, options.holeTriangles, connectivity);
     if (status.ok() && pass > 1 && connectivity.triangles.size() == result.mesh.triangles.size())
       break; // the far triangles are at the maximum level: the last pass stands
     const SemiRegularMesh built = checked ? connectivity : SemiRegularMesh{};

@@ -57,6 +57,11 @@ struct RemeshOptions
   ///        thread), at most one per model. The result does not depend on
   ///        it; the threads have ended when `remesh()` returns.
   int threads = 0;
+  /// \brief Per base triangle of the domain, 1 for a hole's (a cap that
+  ///        `closeBaseDomain()` added to an open L0): the remesh leaves
+  ///        those triangles out (`removeHoleTriangles()`), so its boundary
+  ///        vertices lie on the models' boundaries. Empty: none.
+  std::vector<char> holeTriangles;
   /// \brief Called with the fraction (0 to 1) of the models placed, if set,
   ///        always on the calling thread.
   std::function<void(double)> progress;

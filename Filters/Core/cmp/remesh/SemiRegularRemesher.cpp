@@ -106,6 +106,64 @@ bool locationInBaseTriangle(const BaseDomain& domain, const SurfacePoint& at, in
   return true;
 }
 
+Status removeHoleTriangles(const BaseDomain& domain, const std::vector<char>& holeTriangles, SemiRegularMesh& mesh)
+{
+  if (holeTriangles.empty())
+    return {};
+  if (holeTriangles.size() != static_cast<std::size_t>(domain.mesh.triangleCount()))
+    return Status::error("holeTriangles has " + std::to_string(holeTriangles.size()) +
+      " entries but the base domain has " + std::to_string(domain.mesh.triangleCount()) + " triangles");
+  const int vertices = mesh.vertexCount();
+  const auto hole = [&](int patch) { return patch >= 0 && patch < static_cast<int>(holeTriangles.size()) && holeTriangles[patch]; };
+  std::vector<int> keptPatchOf(vertices, -1); // a kept base triangle each vertex lies in
+  std::vector<int> keptTriangles;
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t)
+    if (!hole(mesh.patchOfTriangle[t]))
+    {
+      keptTriangles.push_back(t);
+      for (int v : mesh.triangles[t])
+        if (keptPatchOf[v] < 0)
+          keptPatchOf[v] = mesh.patchOfTriangle[t];
+    }
+  if (keptTriangles.empty())
+    return Status::error("every base triangle is a hole: nothing is left to remesh");
+  std::vector<int> newIndex(vertices, -1);
+  SemiRegularMesh open;
+  open.level = mesh.level;
+  for (int v = 0; v < vertices; ++v)
+  {
+    if (keptPatchOf[v] < 0)
+      continue;
+    newIndex[v] = open.vertexCount();
+    SurfacePoint at = mesh.locations[v];
+    if (hole(at.triangle))
+    {
+      // On the edge (or corner) a hole shares with a kept base triangle:
+      // the same place, named in the kept one.
+      Vec2 q;
+      if (!locationInBaseTriangle(domain, at, keptPatchOf[v], q))
+        return Status::error("internal error: remesh vertex " + std::to_string(v) + " lies in a hole and outside it");
+      std::array<double, 3> c{ { 1.0 - q.x() - q.y(), q.x(), q.y() } };
+      for (double& w : c)
+        if (std::abs(w) < 1e-15)
+          w = 0.0;
+      at = SurfacePoint::inTriangle(domain.mesh, keptPatchOf[v], c);
+    }
+    open.locations.push_back(at);
+    open.levelOfVertex.push_back(mesh.levelOfVertex[v]);
+  }
+  for (int t : keptTriangles)
+  {
+    const Triangle& tri = mesh.triangles[t];
+    open.triangles.push_back({ newIndex[tri[0]], newIndex[tri[1]], newIndex[tri[2]] });
+    open.patchOfTriangle.push_back(mesh.patchOfTriangle[t]);
+    if (t < static_cast<int>(mesh.levelOfTriangle.size()))
+      open.levelOfTriangle.push_back(mesh.levelOfTriangle[t]);
+  }
+  mesh = std::move(open);
+  return {};
+}
+
 std::string remeshLevelProblem(int level)
 {
   return "level " + std::to_string(level) + " is out of range (0 to " + std::to_string(kMaximumRemeshLevel) + ")";

@@ -82,6 +82,20 @@ std::string remeshLevelProblem(const std::string& property, int level);
 ///        and on a `domain` that fails `checkBaseDomain()`.
 Status buildSemiRegularMesh(const BaseDomain& domain, int level, SemiRegularMesh& out);
 
+/// \brief Leaves out of `mesh` its triangles in the base triangles marked in
+///        `holeTriangles` (one entry per base triangle of `domain`; the caps
+///        `closeBaseDomain()` added to an open L0) and the vertices only
+///        they use, the others in their order: the base vertices of the open
+///        L0, whose features come before the caps', stay vertices 0..F-1,
+///        and the vertices of level l stay the first of level l + 1. A
+///        vertex on an edge between a hole and a kept base triangle gets its
+///        place named in the kept one. Nothing changes with `holeTriangles`
+///        empty. Beyond the paper (surfaces with boundaries).
+/// \pre `mesh` was built on `domain`.
+/// Fails (Status), `mesh` unchanged, when `holeTriangles` has not one entry
+/// per base triangle or marks all of them.
+Status removeHoleTriangles(const BaseDomain& domain, const std::vector<char>& holeTriangles, SemiRegularMesh& mesh);
+
 /// \brief Decides whether a triangle of an adaptive remesh is split: gets
 ///        its corners as locations in its base triangle and its level.
 using SplitRule = std::function<bool(const std::array<SurfacePoint, 3>& corners, int level)>;
