@@ -46,13 +46,29 @@ def landmark_count(surface):
     return len(landmark_points(surface))
 
 
+def edge_count(polydata):
+    """The distinct edges of a polydata's triangles (3T/2 for a closed one)."""
+    edges = set()
+    for cell in range(polydata.GetNumberOfCells()):
+        ids = polydata.GetCell(cell).GetPointIds()
+        count = ids.GetNumberOfIds()
+        for k in range(count):
+            a, b = ids.GetId(k), ids.GetId((k + 1) % count)
+            edges.add((min(a, b), max(a, b)))
+    return len(edges)
+
+
 def describe_base_domain(domain, source):
     report = {
         "source": source,
         "vertices": domain.GetNumberOfPoints(),
         "triangles": domain.GetNumberOfCells(),
-        "edges": 3 * domain.GetNumberOfCells() // 2,
+        "edges": edge_count(domain),
     }
+    loops = domain.GetNumberOfPoints() - report["edges"] + report["triangles"]
+    if loops != 2:
+        # A sphere with holes: V - E + F = 2 - holes.
+        report["boundary_loops"] = 2 - loops
     for name, key in ((array_names.MINIMUM_ANGLE_FIELD, "min_angle_degrees"),
                       (array_names.MEAN_SHAPE_QUALITY_FIELD, "mean_shape_quality")):
         array = domain.GetFieldData().GetArray(name)

@@ -223,11 +223,11 @@ std::vector<std::string> arraysKeptFromTarget(vtkPointData* source)
 
 /// One target with the source's attributes, and the field arrays saying
 /// what was carried and how many points texture seams added.
-cmp::Status transferTo(vtkPolyData* target, const cmp::BaseDomain& domain, const cmp::bridge::ParameterizedInput& source,
-  bool splitSeams, vtkPolyData* result)
+cmp::Status transferTo(vtkPolyData* target, const cmp::BaseDomain& domain, const cmp::BaseDomainHoles& holes,
+  const cmp::bridge::ParameterizedInput& source, bool splitSeams, vtkPolyData* result)
 {
   const auto start = std::chrono::steady_clock::now();
-  cmp::bridge::ParameterizedInput mapped(domain, target);
+  cmp::bridge::ParameterizedInput mapped(domain, target, &holes);
   if (cmp::Status s = mapped.prepare(); !s.ok())
     return s;
   const cmp::BaseDomainMesh where = cmp::bridge::toBaseDomainMesh(mapped);
@@ -292,13 +292,14 @@ int vtkCMPAttributeTransfer::RequestData(
   if (!baseInput)
     return fail("no base domain: connect L0 (the one source and targets were parameterized over) to the third input");
   cmp::BaseDomain domain;
-  if (cmp::Status s = cmp::bridge::toBaseDomain(baseInput, domain); !s.ok())
+  cmp::BaseDomainHoles holes; // an open L0's caps: source and targets are closed anew
+  if (cmp::Status s = cmp::bridge::toClosedBaseDomain(baseInput, domain, holes); !s.ok())
     return fail(s.message());
   cmp::bridge::SurfaceCollection targets;
   if (cmp::Status s = cmp::bridge::collectSurfaces(input, targets); !s.ok())
     return fail(s.message());
 
-  cmp::bridge::ParameterizedInput source(domain, sourceInput);
+  cmp::bridge::ParameterizedInput source(domain, sourceInput, &holes);
   if (cmp::Status s = source.prepare(); !s.ok())
     return fail("source: " + s.message());
   this->UpdateProgress(0.2);
@@ -306,7 +307,7 @@ int vtkCMPAttributeTransfer::RequestData(
   for (std::size_t m = 0; m < targets.surfaces.size(); ++m)
   {
     results.push_back(vtkSmartPointer<vtkPolyData>::New());
-    if (cmp::Status s = transferTo(targets.surfaces[m], domain, source, this->SplitTextureSeams, results.back());
+    if (cmp::Status s = transferTo(targets.surfaces[m], domain, holes, source, this->SplitTextureSeams, results.back());
         !s.ok())
       return fail((targets.multiblock ? targets.labels[m] : std::string("target: ")) + s.message());
     this->UpdateProgress(0.2 + 0.8 * static_cast<double>(m + 1) / targets.surfaces.size());

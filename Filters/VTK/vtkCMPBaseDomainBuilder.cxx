@@ -1,6 +1,7 @@
 #include "vtkCMPBaseDomainBuilder.h"
 
 #include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/mesh/SurfaceCheck.h>
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkFieldData.h>
@@ -17,7 +18,16 @@ int vtkCMPBaseDomainBuilder::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   cmp::TriangleMesh mesh;
   cmp::LandmarkList landmarks;
-  cmp::Status status = cmp::bridge::toCheckedSurface(input, mesh);
+  // Read without refusing boundary loops: buildBaseDomain() caps them and
+  // checks the contract of surfaces with boundaries (beyond the paper). Any
+  // other defect is refused here, first, as before.
+  cmp::Status status = cmp::bridge::toTriangleMesh(input, mesh);
+  if (status.ok())
+  {
+    const cmp::SurfaceCheckResult check = cmp::checkSurface(mesh);
+    if (!check.ok() && check.defect != cmp::SurfaceDefect::BoundaryEdge)
+      status = cmp::Status::error(check.message);
+  }
   if (status.ok())
   {
     // A base domain is built from the landmarks a user placed, all of them.

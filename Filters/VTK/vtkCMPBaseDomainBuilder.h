@@ -18,12 +18,20 @@
 /// Every step is a topology-preserving half-edge collapse, so the result is
 /// always a valid genus-0 triangulation laid out like the surface.
 ///
+/// A surface with boundary loops (beyond the paper) is accepted when each
+/// loop passes through at least 3 landmarks: `L0` is then open, with as
+/// many boundary loops, each made of exactly the landmarks on one of the
+/// surface's loops, in the same cyclic order (`cmp::buildBaseDomain()`).
+///
 /// Paper §2 lets `L0` be given or "found automatically"; this decimation is
 /// ours (core `cmp::buildBaseDomain()`). Fails with `vtkErrorMacro` and no
 /// output when the surface or its landmarks fail the checks of Check
-/// Inputs, when the model misses landmarks (a `-1` in its file), with
-/// fewer than 4 landmarks, or when the decimation gets stuck;
-/// messages in Documentation/filters/BaseDomainBuilder.md.
+/// Inputs (a closed surface), when the model misses landmarks (a `-1` in
+/// its file), with fewer than 4 landmarks on a closed surface, when an open
+/// surface breaks the contract above (a boundary loop with fewer than 3
+/// landmarks, a pinched boundary, or a surface that is not a sphere once
+/// its loops are capped), or when the decimation gets stuck; messages in
+/// Documentation/filters/BaseDomainBuilder.md.
 class CMPFILTERS_EXPORT vtkCMPBaseDomainBuilder : public vtkPolyDataAlgorithm
 {
 public:

@@ -81,42 +81,53 @@ std::vector<cmp::SurfacePoint> inputPointsOf(const cmp::EditableMesh& mesh, int 
   return points;
 }
 
-/// The refined surface with the input's arrays carried through and PatchId.
+/// The refined surface with the input's arrays carried through and PatchId:
+/// the part of it outside the holes (`kept`; all of it for a closed L0).
 vtkSmartPointer<vtkPolyData> refinedSurface(
-  const cmp::TracedNet& net, vtkPolyData* input, const cmp::TriangleMesh& inputMesh)
+  const cmp::TracedNet& net, vtkPolyData* input, const cmp::TriangleMesh& inputMesh, const cmp::OpenPart& kept)
 {
   const cmp::EditableMesh& mesh = net.mesh;
-  vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(mesh.toTriangleMesh());
+  vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(kept.mesh);
   const vtkIdType inputPoints = input->GetNumberOfPoints();
+  const int vertices = kept.mesh.vertexCount();
+  const int triangles = kept.mesh.triangleCount();
   vtkPointData* points = surface->GetPointData();
-  points->CopyAllocate(input->GetPointData(), mesh.vertexCount());
-  points->SetNumberOfTuples(mesh.vertexCount()); // interpolation below reads and writes in place
-  for (vtkIdType v = 0; v < inputPoints; ++v)
-    points->CopyData(input->GetPointData(), v, v);
-  for (int v = static_cast<int>(inputPoints); v < mesh.vertexCount(); ++v)
+  points->CopyAllocate(input->GetPointData(), vertices);
+  points->SetNumberOfTuples(vertices); // interpolation below reads and writes in place
+  // A split vertex comes after the ends of its edge, which lie on the
+  // surface (the caps' edges are never split into the surface's part).
+  for (int v = 0; v < vertices; ++v)
   {
-    const cmp::VertexOrigin& origin = mesh.origin(v);
-    points->InterpolateEdge(points, v, origin.a, origin.b, origin.t);
+    const int old = kept.vertexOf[v];
+    if (old < inputPoints)
+      points->CopyData(input->GetPointData(), old, v);
+    else
+    {
+      const cmp::VertexOrigin& origin = mesh.origin(old);
+      points->InterpolateEdge(points, v, kept.newIndex[origin.a], kept.newIndex[origin.b], origin.t);
+    }
   }
   if (vtkDataArray* featureIds = points->GetArray(cmp::bridge::kFeatureIdArray))
-    for (vtkIdType v = inputPoints; v < mesh.vertexCount(); ++v)
-      featureIds->SetComponent(v, 0, -1);
+    for (int v = 0; v < vertices; ++v)
+      if (kept.vertexOf[v] >= inputPoints)
+        featureIds->SetComponent(v, 0, -1);
 
   vtkCellData* cells = surface->GetCellData();
-  cells->CopyAllocate(input->GetCellData(), mesh.triangleCount());
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-    cells->CopyData(input->GetCellData(), mesh.inputTriangle(t), t);
+  cells->CopyAllocate(input->GetCellData(), triangles);
+  for (int t = 0; t < triangles; ++t)
+    cells->CopyData(input->GetCellData(), mesh.inputTriangle(kept.triangleOf[t]), t);
   vtkDataArray* corners = cells->GetArray(cmp::bridge::kCornerTCoordsArray);
   vtkDataArray* inputCorners = input->GetCellData()->GetArray(cmp::bridge::kCornerTCoordsArray);
   if (corners && inputCorners && corners->GetNumberOfComponents() == 6)
   {
     const std::vector<cmp::SurfacePoint> onInput = inputPointsOf(mesh, static_cast<int>(inputPoints));
-    cmp::bridge::interpolateCornerTCoords(corners, inputCorners, inputMesh, mesh.triangleCount(),
-      [&](int t) { return mesh.inputTriangle(t); }, [&](int t, int c) { return onInput[mesh.triangle(t)[c]]; });
+    cmp::bridge::interpolateCornerTCoords(corners, inputCorners, inputMesh, triangles,
+      [&](int t) { return mesh.inputTriangle(kept.triangleOf[t]); },
+      [&](int t, int c) { return onInput[mesh.triangle(kept.triangleOf[t])[c]]; });
   }
-  auto patchIds = intArray(cmp::bridge::kPatchIdArray, mesh.triangleCount());
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-    patchIds->SetValue(t, net.patchOfTriangle[t]);
+  auto patchIds = intArray(cmp::bridge::kPatchIdArray, triangles);
+  for (int t = 0; t < triangles; ++t)
+    patchIds->SetValue(t, net.patchOfTriangle[kept.triangleOf[t]]);
   cells->AddArray(patchIds);
   return surface;
 }
@@ -143,14 +154,20 @@ int vtkCMPFeatureNetTracer::RequestData(
     vtkErrorMacro(<< model << "no base domain: connect L0 (for example from Base Domain Builder) to the second input");
     return 0;
   }
-  cmp::TriangleMesh mesh;
   cmp::LandmarkList landmarks;
   cmp::BaseDomain domain;
-  cmp::Status status = cmp::bridge::toCheckedSurface(input, mesh);
+  cmp::BaseDomainHoles holes;
+  cmp::bridge::ClosedSurface surface;
+  // The surface's own defects first, then its landmarks, then L0.
+  cmp::TriangleMesh asGiven;
+  cmp::Status status = cmp::bridge::toCheckedSurfaceWithBoundaries(input, asGiven);
   if (status.ok())
     status = cmp::bridge::readLandmarks(input, landmarks);
   if (status.ok())
-    status = cmp::bridge::toBaseDomain(baseInput, domain, static_cast<int>(landmarks.size()));
+    status = cmp::bridge::toClosedBaseDomain(baseInput, domain, holes, static_cast<int>(landmarks.size()));
+  if (status.ok())
+    status = cmp::bridge::toClosedSurface(input, landmarks, holes, surface);
+  const cmp::TriangleMesh& mesh = surface.open;
   cmp::TracedNet net;
   cmp::NetTracerReport report;
   if (status.ok())
@@ -159,7 +176,9 @@ int vtkCMPFeatureNetTracer::RequestData(
     options.parameterizationWeight = this->ParameterizationWeight;
     options.detectSwirls = this->DetectSwirls;
     options.progress = [this](double fraction) { this->UpdateProgress(0.9 * fraction); };
-    status = cmp::traceFeatureNet(mesh, landmarks, domain, net, options, &report);
+    // An open surface's caps come traced: its boundary stretches and the spokes.
+    options.presetCurves = surface.holes.curves;
+    status = cmp::traceFeatureNet(surface.closed, surface.closedLandmarks, domain, net, options, &report);
   }
   if (!status.ok())
   {
@@ -170,8 +189,9 @@ int vtkCMPFeatureNetTracer::RequestData(
   const bool valid = layoutIsValid(net, domain, problem);
   if (!valid)
     vtkWarningMacro(<< model << "the traced net failed the layout check: " << problem);
-  surfaceOutput->ShallowCopy(refinedSurface(net, input, mesh));
-  curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(net, domain));
+  const cmp::OpenPart kept = cmp::openPart(net.mesh.toTriangleMesh(), net.patchOfTriangle, holes.holeTriangle);
+  surfaceOutput->ShallowCopy(refinedSurface(net, input, mesh, kept));
+  curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(net, domain, holes));
   const double lengthPerSqrtArea = report.netLength / std::sqrt(cmp::surfaceArea(mesh));
   for (vtkPolyData* output : { surfaceOutput, curvesOutput })
   {

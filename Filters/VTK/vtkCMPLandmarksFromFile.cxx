@@ -24,7 +24,7 @@ int vtkCMPLandmarksFromFile::RequestData(
     return 0;
   }
   cmp::TriangleMesh mesh;
-  if (cmp::Status s = cmp::bridge::toCheckedSurface(input, mesh); !s.ok())
+  if (cmp::Status s = cmp::bridge::toCheckedSurfaceWithBoundaries(input, mesh); !s.ok())
   {
     vtkErrorMacro(<< model << s.message());
     return 0;

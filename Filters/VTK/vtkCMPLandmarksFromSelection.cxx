@@ -101,7 +101,7 @@ int vtkCMPLandmarksFromSelection::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   const std::string model = cmp::bridge::modelPrefix(input);
   cmp::TriangleMesh mesh;
-  if (cmp::Status s = cmp::bridge::toCheckedSurface(input, mesh); !s.ok())
+  if (cmp::Status s = cmp::bridge::toCheckedSurfaceWithBoundaries(input, mesh); !s.ok())
   {
     vtkErrorMacro(<< model << s.message());
     return 0;

@@ -51,9 +51,9 @@ using cmp::bridge::kBaseCoordinatesArray;
 /// with the input location of each new vertex, FeatureId written anew, and
 /// the base-domain coordinates.
 void fillPointData(vtkPointData* points, vtkPointData* input, const cmp::StraightenedNet& straight,
-  const cmp::BaseDomain& domain, const cmp::PatchParameterization& parameterization)
+  const cmp::BaseDomain& domain, const cmp::PatchParameterization& parameterization, const cmp::OpenPart& kept)
 {
-  const int vertices = straight.net.mesh.vertexCount();
+  const int vertices = kept.mesh.vertexCount();
   // FeatureId marks exactly the landmarks: interpolating it would spread
   // feature numbers onto the points around them. The base arrays of an input
   // that was straightened before are replaced below.
@@ -64,10 +64,10 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const cmp::Straigh
   double weights[3];
   for (int v = 0; v < vertices; ++v)
   {
-    const cmp::SurfacePoint& at = straight.inputPoint[v];
+    const cmp::SurfacePoint& at = straight.inputPoint[kept.vertexOf[v]];
     ids->Reset();
     for (int k = 0; k < 3; ++k)
-      if (at.vertex[k] >= 0)
+      if (at.vertex[k] >= 0 && at.weight[k] != 0.0) // (a cap's centre has no data, and weighs nothing here)
       {
         weights[ids->GetNumberOfIds()] = at.weight[k];
         ids->InsertNextId(at.vertex[k]);
@@ -83,7 +83,8 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const cmp::Straigh
   featureIds->SetNumberOfTuples(vertices);
   featureIds->Fill(-1);
   for (int bv = 0; bv < domain.mesh.vertexCount(); ++bv)
-    featureIds->SetComponent(straight.net.landmarkVertex[bv], 0, domain.featureIds[bv]);
+    if (const int v = kept.newIndex[straight.net.landmarkVertex[bv]]; v >= 0) // not a cap's centre
+      featureIds->SetComponent(v, 0, domain.featureIds[bv]);
   points->AddArray(featureIds);
 
   vtkNew<vtkIntArray> baseTriangles;
@@ -95,8 +96,8 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const cmp::Straigh
   baseCoordinates->SetNumberOfTuples(vertices);
   for (int v = 0; v < vertices; ++v)
   {
-    baseTriangles->SetValue(v, parameterization.baseTriangle[v]);
-    baseCoordinates->SetTypedTuple(v, parameterization.baseCoordinates[v].data());
+    baseTriangles->SetValue(v, parameterization.baseTriangle[kept.vertexOf[v]]);
+    baseCoordinates->SetTypedTuple(v, parameterization.baseCoordinates[kept.vertexOf[v]].data());
   }
   points->AddArray(baseTriangles);
   points->AddArray(baseCoordinates);
@@ -105,27 +106,27 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const cmp::Straigh
 /// Cell data of the straightened surface: every input array copied from the
 /// input triangle each triangle lies in, and the new PatchId.
 void fillCellData(vtkCellData* cells, vtkCellData* input, const cmp::TriangleMesh& inputMesh,
-  const cmp::StraightenedNet& straight)
+  const cmp::StraightenedNet& straight, const cmp::OpenPart& kept)
 {
-  const int triangles = straight.net.mesh.triangleCount();
+  const int triangles = kept.mesh.triangleCount();
   // A straight curve may cut an input triangle: its pieces need not stay in
   // the input triangle's patch.
   cells->CopyFieldOff(cmp::bridge::kPatchIdArray);
   cells->CopyAllocate(input, triangles);
   for (int t = 0; t < triangles; ++t)
-    cells->CopyData(input, straight.inputTriangle[t], t);
+    cells->CopyData(input, straight.inputTriangle[kept.triangleOf[t]], t);
   vtkDataArray* corners = cells->GetArray(cmp::bridge::kCornerTCoordsArray);
   vtkDataArray* inputCorners = input->GetArray(cmp::bridge::kCornerTCoordsArray);
   if (corners && inputCorners && corners->GetNumberOfComponents() == 6)
     cmp::bridge::interpolateCornerTCoords(corners, inputCorners, inputMesh, triangles,
-      [&](int t) { return straight.inputTriangle[t]; },
-      [&](int t, int c) { return straight.inputPoint[straight.net.mesh.triangle(t)[c]]; });
+      [&](int t) { return straight.inputTriangle[kept.triangleOf[t]]; },
+      [&](int t, int c) { return straight.inputPoint[straight.net.mesh.triangle(kept.triangleOf[t])[c]]; });
 
   vtkNew<vtkIntArray> patchIds;
   patchIds->SetName(cmp::bridge::kPatchIdArray);
   patchIds->SetNumberOfValues(triangles);
   for (int t = 0; t < triangles; ++t)
-    patchIds->SetValue(t, straight.net.patchOfTriangle[t]);
+    patchIds->SetValue(t, straight.net.patchOfTriangle[kept.triangleOf[t]]);
   cells->AddArray(patchIds);
 }
 
@@ -158,26 +159,45 @@ int vtkCMPNetStraightener::RequestData(
     vtkErrorMacro(<< model << problem.message());
     return 0;
   }
-  cmp::TriangleMesh mesh;
   cmp::LandmarkList landmarks;
   cmp::BaseDomain domain;
+  cmp::BaseDomainHoles holes;
+  cmp::bridge::ClosedSurface surface;
   std::vector<int> patchIds;
-  cmp::Status status = cmp::bridge::toCheckedSurface(input, mesh);
+  // The surface's own defects first, then its landmarks, then L0.
+  cmp::TriangleMesh asGiven;
+  cmp::Status status = cmp::bridge::toCheckedSurfaceWithBoundaries(input, asGiven);
   if (status.ok())
     status = cmp::bridge::readLandmarks(input, landmarks);
   if (status.ok())
-    status = cmp::bridge::toBaseDomain(baseInput, domain, static_cast<int>(landmarks.size()));
+    status = cmp::bridge::toClosedBaseDomain(baseInput, domain, holes, static_cast<int>(landmarks.size()));
+  if (status.ok())
+    status = cmp::bridge::toClosedSurface(input, landmarks, holes, surface);
   if (status.ok())
     status = cmp::bridge::readPatchIds(input, patchIds);
+  if (status.ok())
+  {
+    // The caps, closed anew, lie in the holes' base triangles.
+    const std::vector<int> caps = cmp::capPatchIds(surface.holes, holes);
+    patchIds.insert(patchIds.end(), caps.begin(), caps.end());
+  }
+  const cmp::TriangleMesh& mesh = surface.open;
   // The core only rebuilds a layout that is one; checking first names the
   // problem in the user's terms (for example L0 from another collection).
   if (status.ok())
-    if (const std::string problem = layoutProblem(cmp::toLabelledSurface(mesh, patchIds, landmarks), domain);
+    if (const std::string problem =
+          layoutProblem(cmp::toLabelledSurface(surface.closed, patchIds, surface.closedLandmarks), domain);
         !problem.empty())
       status = cmp::Status::error("the input's PatchId layout is not equivalent to L0: " + problem);
   cmp::TracedNet traced;
   if (status.ok())
-    status = cmp::layoutFromPatchIds(mesh, patchIds, landmarks, domain, traced);
+    status = cmp::layoutFromPatchIds(surface.closed, patchIds, surface.closedLandmarks, domain, traced);
+  if (!holes.empty())
+  {
+    // The caps stay as they are: their curves, and their vertices in the map.
+    options.net.keptFeatures = holes.keptFeatures();
+    options.map.fixedPatches = holes.holeTriangle;
+  }
   cmp::StraightenedNet straight;
   cmp::PatchParameterization parameterization;
   cmp::StraightenReport straightenReport;
@@ -201,11 +221,13 @@ int vtkCMPNetStraightener::RequestData(
     vtkWarningMacro(<< model << parameterization.flippedTriangles
                     << " triangles are flipped in their patch's map onto its base triangle");
 
-  vtkSmartPointer<vtkPolyData> surface = cmp::bridge::toPolyData(straight.net.mesh.toTriangleMesh());
-  fillPointData(surface->GetPointData(), input->GetPointData(), straight, domain, parameterization);
-  fillCellData(surface->GetCellData(), input->GetCellData(), mesh, straight);
-  surfaceOutput->ShallowCopy(surface);
-  curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(straight.net, domain));
+  const cmp::OpenPart kept =
+    cmp::openPart(straight.net.mesh.toTriangleMesh(), straight.net.patchOfTriangle, holes.holeTriangle);
+  vtkSmartPointer<vtkPolyData> straightened = cmp::bridge::toPolyData(kept.mesh);
+  fillPointData(straightened->GetPointData(), input->GetPointData(), straight, domain, parameterization, kept);
+  fillCellData(straightened->GetCellData(), input->GetCellData(), mesh, straight, kept);
+  surfaceOutput->ShallowCopy(straightened);
+  curvesOutput->ShallowCopy(cmp::bridge::toPolyLines(straight.net, domain, holes));
   // Scale-free, like the tracer's NetLengthPerSqrtArea: the area is unchanged.
   const double lengthPerSqrtArea = report.netLengthAfter / std::sqrt(cmp::surfaceArea(mesh));
   const cmp::CurveGap widestGap = cmp::widestCurveGap(straight.net);

@@ -111,34 +111,79 @@ Status readParameterization(vtkPolyData* input, int baseTriangleCount, PatchPara
   return {};
 }
 
-ParameterizedInput::ParameterizedInput(const BaseDomain& domain, vtkPolyData* input)
+ParameterizedInput::ParameterizedInput(const BaseDomain& domain, vtkPolyData* input, const BaseDomainHoles* holes)
   : domain_(domain)
   , input_(input)
+  , holes_(holes && !holes->empty() ? holes : nullptr)
 {
+}
+
+Status ParameterizedInput::closeInput(const LandmarkList& landmarks, TriangleMesh& closed,
+  LandmarkList& closedLandmarks, std::vector<int>& closedPatchIds)
+{
+  SurfaceHoles surfaceHoles;
+  if (Status s = closeSurface(mesh_, landmarks, *holes_, closed, closedLandmarks, surfaceHoles); !s.ok())
+    return s;
+  SurfaceCheckOptions topologyOnly;
+  topologyOnly.checkGeometry = false;
+  if (const SurfaceCheckResult check = checkSurface(closed, topologyOnly); !check.ok())
+    return Status::error(check.message + " (the surface with its boundary loops capped)");
+  closedPatchIds = patchIds_;
+  const std::vector<int> caps = capPatchIds(surfaceHoles, *holes_);
+  closedPatchIds.insert(closedPatchIds.end(), caps.begin(), caps.end());
+  // Each cap's centre is its hole's base vertex: corner 2 of the hole's
+  // first triangle (closeBaseDomain() draws them (b, a, centre)).
+  closedMap_ = parameterization_;
+  int first = holes_->openTriangleCount;
+  for (const std::vector<int>& loop : holes_->loops)
+  {
+    closedMap_.baseTriangle.push_back(first);
+    closedMap_.baseCoordinates.push_back({ 0.0, 0.0, 1.0 });
+    first += static_cast<int>(loop.size());
+  }
+  return {};
 }
 
 Status ParameterizedInput::prepare()
 {
   LandmarkList landmarks;
-  Status status = toParameterizedSurface(input_, mesh_);
+  Status status;
+  if (holes_)
+  {
+    status = toTriangleMesh(input_, mesh_);
+    for (int v = 0; v < mesh_.vertexCount() && status.ok(); ++v)
+      if (!mesh_.points[v].allFinite())
+        status = Status::error("point " + std::to_string(v) + " has a NaN or infinite coordinate");
+  }
+  else
+    status = toParameterizedSurface(input_, mesh_);
   if (status.ok())
     status = readLandmarks(input_, landmarks);
   if (status.ok())
-    status = checkBaseDomain(domain_, static_cast<int>(landmarks.size()));
+    status = holes_ ? (static_cast<int>(landmarks.size()) == holes_->openVertexCount
+                          ? Status{}
+                          : Status::error("the surface has " + std::to_string(landmarks.size()) +
+                              " landmarks but L0 has " + std::to_string(holes_->openVertexCount) + " vertices"))
+                    : checkBaseDomain(domain_, static_cast<int>(landmarks.size()));
   if (status.ok())
     status = readPatchIds(input_, patchIds_);
   if (status.ok())
     status = readParameterization(input_, domain_.mesh.triangleCount(), parameterization_);
+  TriangleMesh closed = mesh_;
+  LandmarkList closedLandmarks = landmarks;
+  std::vector<int> closedPatchIds = patchIds_;
+  if (status.ok() && holes_)
+    status = closeInput(landmarks, closed, closedLandmarks, closedPatchIds);
   // The core only rebuilds a layout that is one; checking first names the
   // problem in the user's terms (for example L0 from another collection).
   if (status.ok())
-    if (const std::string problem = layoutProblem(toLabelledSurface(mesh_, patchIds_, landmarks), domain_);
+    if (const std::string problem = layoutProblem(toLabelledSurface(closed, closedPatchIds, closedLandmarks), domain_);
         !problem.empty())
       status = Status::error("the input's PatchId layout is not equivalent to L0: " + problem);
   if (status.ok())
-    status = layoutFromPatchIds(mesh_, patchIds_, landmarks, domain_, net_);
+    status = layoutFromPatchIds(closed, closedPatchIds, closedLandmarks, domain_, net_);
   if (status.ok())
-    if (Status built = surface_.build(net_, domain_, parameterization_); !built.ok())
+    if (Status built = surface_.build(net_, domain_, holes_ ? closedMap_ : parameterization_); !built.ok())
       status = Status::error(
         "BaseTriangle and BaseCoordinates do not fit the input's PatchId: " + built.message());
   return status;

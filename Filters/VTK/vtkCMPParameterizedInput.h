@@ -10,6 +10,7 @@
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/map/PatchParameterization.h>
 #include <cmp/remesh/SemiRegularRemesher.h>
+#include <cmp/layout/OpenSurface.h>
 #include <cmp/mesh/Status.h>
 #include <cmp/mesh/TriangleMesh.h>
 
@@ -36,8 +37,12 @@ class ParameterizedInput
 {
 public:
   /// \brief Remembers `input` (a Net Straightener or Semi-Regular Remesher
-  ///        output) and `domain`; both must outlive this object.
-  ParameterizedInput(const BaseDomain& domain, vtkPolyData* input);
+  ///        output) and `domain`; both must outlive this object. With
+  ///        `holes` (`closeBaseDomain()`'s, outliving this object too),
+  ///        `domain` is the closed L0 and the input may be open: its caps
+  ///        are closed anew for the layout and the map, while `mesh()`,
+  ///        `patchIds()` and `parameterization()` stay the input's.
+  ParameterizedInput(const BaseDomain& domain, vtkPolyData* input, const BaseDomainHoles* holes = nullptr);
   ParameterizedInput(const ParameterizedInput&) = delete;
   ParameterizedInput& operator=(const ParameterizedInput&) = delete;
 
@@ -61,9 +66,16 @@ public:
   const BaseDomain& domain() const { return domain_; }
 
 private:
+  /// An open input closed against `holes_`: the caps' patches and the
+  /// centres' places added to `closedPatchIds` and `closedMap`.
+  Status closeInput(const LandmarkList& landmarks, TriangleMesh& closed, LandmarkList& closedLandmarks,
+    std::vector<int>& closedPatchIds);
+
   const BaseDomain& domain_;
   vtkPolyData* input_ = nullptr;
+  const BaseDomainHoles* holes_ = nullptr;
   TriangleMesh mesh_;
+  PatchParameterization closedMap_; ///< With an open input, the map of its closed layout.
   TracedNet net_;
   PatchParameterization parameterization_;
   std::vector<int> patchIds_;

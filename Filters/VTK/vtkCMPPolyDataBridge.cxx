@@ -59,6 +59,13 @@ Status toTriangleMesh(vtkPolyData* input, TriangleMesh& mesh)
   return {};
 }
 
+Status toCheckedSurfaceWithBoundaries(vtkPolyData* input, TriangleMesh& mesh)
+{
+  if (Status s = toTriangleMesh(input, mesh); !s.ok())
+    return s;
+  return checkSurfaceWithBoundaries(mesh);
+}
+
 Status toCheckedSurface(vtkPolyData* input, TriangleMesh& mesh)
 {
   if (Status s = toTriangleMesh(input, mesh); !s.ok())
@@ -140,6 +147,41 @@ Status toBaseDomain(vtkPolyData* input, BaseDomain& domain, int landmarkCount)
   return checkBaseDomain(domain, landmarkCount);
 }
 
+Status toClosedBaseDomain(vtkPolyData* input, BaseDomain& domain, BaseDomainHoles& holes, int landmarkCount)
+{
+  domain = BaseDomain{};
+  holes = BaseDomainHoles{};
+  if (!input || input->GetNumberOfPoints() == 0)
+    return Status::error("the base domain is empty");
+  BaseDomain open;
+  if (Status s = toTriangleMesh(input, open.mesh); !s.ok())
+    return Status::error("base domain: " + s.message());
+  if (Status s = readIntegerPointArray(input, kFeatureIdArray, open.featureIds); !s.ok())
+    return Status::error("base domain: " + s.message());
+  if (landmarkCount >= 0 && open.mesh.vertexCount() != landmarkCount)
+    return Status::error("base domain has " + std::to_string(open.mesh.vertexCount()) +
+      " vertices but the surface has " + std::to_string(landmarkCount) + " landmarks; they must match one to one");
+  return closeBaseDomain(open, domain, holes);
+}
+
+Status toClosedSurface(vtkPolyData* input, const LandmarkList& landmarks, const BaseDomainHoles& holes,
+  ClosedSurface& out)
+{
+  out = ClosedSurface{};
+  if (Status s = toTriangleMesh(input, out.open); !s.ok())
+    return s;
+  // The surface's own defects first (a fin, a flipped triangle), then the
+  // contract of its boundary loops against L0's.
+  if (Status s = checkSurfaceWithBoundaries(out.open); !s.ok())
+    return s;
+  if (Status s = closeSurface(out.open, landmarks, holes, out.closed, out.closedLandmarks, out.holes); !s.ok())
+    return s;
+  const SurfaceCheckResult check = checkSurface(out.closed);
+  if (!check.ok())
+    return Status::error(holes.empty() ? check.message : check.message + " (the surface with its boundary loops capped)");
+  return {};
+}
+
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -178,11 +220,22 @@ vtkSmartPointer<vtkPolyData> toPolyData(const BaseDomain& domain)
 
 vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain)
 {
+  return toPolyLines(net, domain, BaseDomainHoles{});
+}
+
+vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain, const BaseDomainHoles& holes)
+{
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   auto lines = vtkSmartPointer<vtkCellArray>::New();
   std::unordered_map<int, vtkIdType> pointOf; // curves share their landmarks
-  const auto edges = static_cast<vtkIdType>(net.curves.size());
+  const auto onCap = [&](int e) {
+    return !holes.empty() && (domain.featureIds[net.baseEdges[e][0]] >= holes.openVertexCount ||
+                               domain.featureIds[net.baseEdges[e][1]] >= holes.openVertexCount);
+  };
+  vtkIdType edges = 0;
+  for (std::size_t e = 0; e < net.curves.size(); ++e)
+    edges += onCap(static_cast<int>(e)) ? 0 : 1;
   const auto intArray = [edges](const char* name)
   {
     auto array = vtkSmartPointer<vtkIntArray>::New();
@@ -193,9 +246,13 @@ vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain&
   auto baseEdgeIds = intArray(kBaseEdgeIdArray);
   auto featureA = intArray(kFeatureIdAArray);
   auto featureB = intArray(kFeatureIdBArray);
-  for (vtkIdType e = 0; e < edges; ++e)
+  vtkIdType cell = 0;
+  for (int edge = 0; edge < static_cast<int>(net.curves.size()); ++edge)
   {
-    const auto& curve = net.curves[e];
+    if (onCap(edge))
+      continue;
+    const vtkIdType e = cell++;
+    const auto& curve = net.curves[edge];
     lines->InsertNextCell(static_cast<vtkIdType>(curve.size()));
     for (int v : curve)
     {
@@ -204,9 +261,9 @@ vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain&
         points->InsertNextPoint(net.mesh.point(v).data());
       lines->InsertCellPoint(it->second);
     }
-    baseEdgeIds->SetValue(e, static_cast<int>(e));
-    featureA->SetValue(e, domain.featureIds[net.baseEdges[e][0]]);
-    featureB->SetValue(e, domain.featureIds[net.baseEdges[e][1]]);
+    baseEdgeIds->SetValue(e, edge);
+    featureA->SetValue(e, domain.featureIds[net.baseEdges[edge][0]]);
+    featureB->SetValue(e, domain.featureIds[net.baseEdges[edge][1]]);
   }
   auto output = vtkSmartPointer<vtkPolyData>::New();
   output->SetPoints(points);

@@ -6,6 +6,7 @@
 #include <cmp/basedomain/BaseDomain.h>
 #include <cmp/io/Landmarks.h>
 #include <cmp/map/NetStraightener.h>
+#include <cmp/layout/OpenSurface.h>
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/mesh/Status.h>
 #include <cmp/mesh/TriangleMesh.h>
@@ -34,6 +35,10 @@ namespace cmp::bridge
 ///        has cells that are not triangles (vertices, lines, polygons, strips).
 Status toTriangleMesh(vtkPolyData* input, TriangleMesh& mesh);
 
+/// \brief Like `toCheckedSurface()`, but a surface with boundary loops
+///        passes when it is a sphere with holes (`checkSurfaceWithBoundaries()`).
+Status toCheckedSurfaceWithBoundaries(vtkPolyData* input, TriangleMesh& mesh);
+
 /// \brief Converts and runs `checkSurface()`, so a filter can reject bad
 ///        input with one call.
 Status toCheckedSurface(vtkPolyData* input, TriangleMesh& mesh);
@@ -55,6 +60,32 @@ Status readPatchIds(vtkPolyData* input, std::vector<int>& patchIds);
 ///        checks it, and that it has `landmarkCount` vertices when >= 0.
 Status toBaseDomain(vtkPolyData* input, BaseDomain& domain, int landmarkCount = -1);
 
+/// \brief Reads a base domain polydata, closed or with boundary loops, and
+///        closes its holes (`closeBaseDomain()`): `domain` is the closed L0
+///        every stage runs on, `holes` what closing added (empty for a
+///        closed L0). With `landmarkCount >= 0`, the open L0 must have that
+///        many vertices.
+Status toClosedBaseDomain(vtkPolyData* input, BaseDomain& domain, BaseDomainHoles& holes, int landmarkCount = -1);
+
+/// \brief A surface as the stages read it: `open` as given (closed or with
+///        boundary loops), `closed` with its holes capped against L0's
+///        (`closeSurface()`) and checked (`checkSurface()`), its landmarks
+///        with the caps' centres, and what the caps added.
+struct ClosedSurface
+{
+  TriangleMesh open;
+  TriangleMesh closed;
+  LandmarkList closedLandmarks;
+  SurfaceHoles holes;
+};
+
+/// \brief Reads `input` and closes it against `holes` (L0's), checking the
+///        contract of surfaces with boundaries and the closed surface.
+///        Fails (Status) on what `toTriangleMesh()`, `closeSurface()` or
+///        `checkSurface()` refuse, in the user's terms.
+Status toClosedSurface(vtkPolyData* input, const LandmarkList& landmarks, const BaseDomainHoles& holes,
+  ClosedSurface& out);
+
 /// \brief Builds a polydata of points and triangles.
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);
 
@@ -66,6 +97,11 @@ vtkSmartPointer<vtkPolyData> toPolyData(const BaseDomain& domain);
 ///        `BaseEdgeId`, `FeatureIdA` and `FeatureIdB` (the landmarks at each
 ///        curve's first and last point).
 vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain);
+
+/// \brief The same without the curves of the caps (a curve to a cap's
+///        centre, a feature not below `holes.openVertexCount`): the patch
+///        layout of an open surface. All curves when `holes` is empty.
+vtkSmartPointer<vtkPolyData> toPolyLines(const TracedNet& net, const BaseDomain& domain, const BaseDomainHoles& holes);
 
 /// \brief A vtkIntArray named `name` holding `values`.
 vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values);

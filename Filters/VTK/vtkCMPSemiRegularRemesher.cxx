@@ -103,8 +103,8 @@ struct SharedArrays
   std::vector<int> featureIds; ///< f at vertex f, -1 elsewhere.
 
   /// Output 1: the connectivity drawn on L0.
-  vtkSmartPointer<vtkPolyData> build(
-    const cmp::SemiRegularMesh& mesh, const cmp::BaseDomain& domain, const cmp::RemeshReport& report)
+  vtkSmartPointer<vtkPolyData> build(const cmp::SemiRegularMesh& mesh, const cmp::BaseDomain& domain,
+    const cmp::BaseDomainHoles& holes, const cmp::RemeshReport& report)
   {
     const int vertices = mesh.vertexCount();
     cmp::TriangleMesh drawn;
@@ -138,7 +138,9 @@ struct SharedArrays
     }
     baseTriangles = intArray(kBaseTriangleArray, triangles);
     featureIds.assign(vertices, -1);
-    for (int f = 0; f < domain.mesh.vertexCount(); ++f)
+    // An open L0's caps are left out of the remesh: its features are F first.
+    const int features = holes.empty() ? domain.mesh.vertexCount() : holes.openVertexCount;
+    for (int f = 0; f < features && f < vertices; ++f)
       featureIds[f] = f;
 
     vtkPointData* points = connectivity->GetPointData();
@@ -201,8 +203,8 @@ void fillPointData(vtkPointData* points, vtkPointData* input, const std::vector<
 /// time that took.
 struct PreparedInput
 {
-  PreparedInput(const cmp::BaseDomain& domain, vtkPolyData* surface)
-    : input(domain, surface)
+  PreparedInput(const cmp::BaseDomain& domain, const cmp::BaseDomainHoles& holes, vtkPolyData* surface)
+    : input(domain, surface, &holes)
   {
   }
   cmp::bridge::ParameterizedInput input;
@@ -301,9 +303,12 @@ int vtkCMPSemiRegularRemesher::RequestData(
   const bool relax = this->SampleRelaxationIterations > 0;
   cmp::bridge::ControllerCommunicator communicator(this->Controller);
   cmp::BaseDomain domain;
+  cmp::BaseDomainHoles holes;
   cmp::Status local = baseInput
-    ? cmp::bridge::toBaseDomain(baseInput, domain)
+    ? cmp::bridge::toClosedBaseDomain(baseInput, domain, holes)
     : cmp::Status::error("no base domain: connect L0 (the one the surfaces were parameterized over) to the second input");
+  // An open L0's caps are not remeshed: the remesh's boundary lies on the surfaces'.
+  options.holeTriangles = holes.holeTriangle;
 
   // The surfaces to remesh: the input itself, or every leaf of a multiblock.
   cmp::bridge::SurfaceCollection collection;
@@ -313,7 +318,7 @@ int vtkCMPSemiRegularRemesher::RequestData(
   std::vector<std::unique_ptr<PreparedInput>> prepared;
   if (local.ok())
     for (vtkPolyData* surface : collection.surfaces)
-      prepared.push_back(std::make_unique<PreparedInput>(domain, surface));
+      prepared.push_back(std::make_unique<PreparedInput>(domain, holes, surface));
   const std::vector<std::string>& names = collection.labels;
   const double modelCount = std::max<double>(1.0, static_cast<double>(prepared.size()));
   for (std::size_t m = 0; m < prepared.size() && local.ok(); ++m)
@@ -340,7 +345,7 @@ int vtkCMPSemiRegularRemesher::RequestData(
     return fail(report.failedModel >= 0 ? names[report.failedModel] + status.message() : status.message());
 
   SharedArrays shared;
-  vtkSmartPointer<vtkPolyData> connectivity = shared.build(remesh.mesh, domain, report);
+  vtkSmartPointer<vtkPolyData> connectivity = shared.build(remesh.mesh, domain, holes, report);
   std::vector<vtkSmartPointer<vtkPolyData>> results;
   for (std::size_t m = 0; m < prepared.size(); ++m)
   {

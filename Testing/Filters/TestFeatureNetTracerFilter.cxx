@@ -134,7 +134,7 @@ TEST(FeatureNetTracerFilter, ReportsBadInput)
   openReader->SetFileName(writeTempFile("tracer-open.off", octahedronOFF(true)).c_str());
   ASSERT_TRUE(run(openReader).succeeded);
   setFeatureIds(openReader->GetOutput(), { 0, 1, 2, 3, 4, 5 });
-  expectError(openReader->GetOutput(), l0, "open surface");
+  expectError(openReader->GetOutput(), l0, "boundary loop(s) (one through vertex 0) but the base domain is closed");
 
   vtkNew<vtkPolyData> fewer;
   fewer->DeepCopy(surface);
@@ -148,7 +148,7 @@ TEST(FeatureNetTracerFilter, ReportsBadInput)
 
   vtkNew<vtkPolyData> openL0;
   openL0->DeepCopy(openReader->GetOutput());
-  expectError(surface, openL0, "base domain: open surface");
+  expectError(surface, openL0, "the surface is closed but the base domain has 1 boundary loop(s)");
 
   tracer->SetInputData(0, surface);
   tracer->SetInputConnection(1, nullptr);

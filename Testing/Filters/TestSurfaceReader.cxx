@@ -212,12 +212,17 @@ TEST(LandmarksFromFile, ReportsBadLandmarkFiles)
 
 TEST(LandmarksFromFile, ChecksTheSurfaceFirst)
 {
+  // An open surface is a sphere with holes (issue 27 B); a fin is no surface.
   vtkSmartPointer<vtkPolyData> open = readSurface(writeTempFile("lm-open.off", octahedronOFF(true)));
   vtkNew<vtkCMPLandmarksFromFile> assign;
   assign->SetInputData(open);
   assign->SetLandmarkFile(writeTempFile("lm-open.txt", "0\n1\n").c_str());
+  EXPECT_TRUE(run(assign).succeeded) << run(assign).error;
+  vtkSmartPointer<vtkPolyData> flipped = readSurface(writeTempFile("lm-flip.off", octahedronOFF()));
+  flipped->GetPolys()->ReplaceCellAtId(0, { 2, 0, 4 });
+  assign->SetInputData(flipped);
   const RunResult result = run(assign);
-  EXPECT_NE(result.error.find("open surface: 3 boundary edges"), std::string::npos) << result.error;
+  EXPECT_NE(result.error.find("inconsistent orientation"), std::string::npos) << result.error;
 }
 
 namespace

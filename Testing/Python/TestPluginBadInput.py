@@ -118,16 +118,25 @@ def run_cases(tmp):
     expect_failure(reader, [compressed, "its last offset, 2199023255552, is beyond the 24 values"], "compressed.vtp")
     Delete(reader)  # noqa: F405
 
-    # The check of an open surface, and the builder given it.
+    # An open surface is a sphere with a hole (issue 27 B): checked, it
+    # passes; with one landmark on its boundary loop (vertices 0, 3, 5), the
+    # check and the builder say that each loop needs 3.
     reader.FileName = opened
     expect_success(reader, 6, "reader of the open surface")
     checked = CheckInputs(Input=reader)  # noqa: F405
-    expect_failure(checked, ["open surface", "3 boundary edges"], "open surface", reader)
-    landmarks = LandmarksFromFile(Input=reader, LandmarkFile=all_six)  # noqa: F405
+    expect_success(checked, 6, "open surface through CheckInputs", reader)
+    one_on_the_loop = write_text(os.path.join(tmp, "one-on-loop.pinned"), "lk 1\nlk 2\nlk 4\nlk 5\n")
+    landmarks = LandmarksFromFile(Input=reader, LandmarkFile=one_on_the_loop)  # noqa: F405
+    checked_landmarks = CheckInputs(Input=landmarks)  # noqa: F405
+    expect_failure(checked_landmarks, ["passes through 1 landmark, but every boundary loop needs at least 3"],
+                   "open surface with one landmark on its loop", landmarks, reader)
     builder = BaseDomainBuilder(Input=landmarks)  # noqa: F405
-    expect_failure(builder, ["open surface"], "base domain of an open surface", landmarks, reader)
+    expect_failure(builder, ["at least 3"], "base domain of an open surface with one landmark on its loop",
+                   landmarks, reader)
+    Delete(checked_landmarks)  # noqa: F405
 
     # The same proxies recover once the surface is closed.
+    landmarks.LandmarkFile = all_six
     reader.FileName = closed
     surface = expect_success(checked, 6, "closed octahedron through CheckInputs", reader)
     check_equal(field_value(surface, "InputCheck"), "ok", "InputCheck field value")
