@@ -5,10 +5,11 @@
 
 CASE is one of: shipped-examples, collection, given-base-domain,
 failure-isolation, crash-isolation, models-in-parallel (needs --mpiexec),
-model-timeout, reproducible-files, argument-errors, base-domain-mismatch, cut-along-the-map. Every case but
-argument-errors, shipped-examples and cut-along-the-map needs the shared
-data (those two take the project's Data folder; cut-along-the-map remeshes
-two of its CGAL quadrupeds, from libcgal-demo). Each run writes into a fresh temporary
+model-timeout, reproducible-files, argument-errors, base-domain-mismatch, cut-along-the-map,
+faces-collection. Every case but argument-errors, shipped-examples,
+cut-along-the-map and faces-collection needs the shared data (those take the
+project's Data folder; cut-along-the-map remeshes two of its CGAL
+quadrupeds, faces-collection its open CGAL faces, from libcgal-demo). Each run writes into a fresh temporary
 folder.
 
 The command's PNG pictures need an X display. With --pictures (run the test
@@ -1115,7 +1116,8 @@ def case_failure_isolation(tmp):
         "386": ((shrec("386", "off"), shrec("387", "vts")), ["387.vts", "is this the landmark file of another mesh?"]),
         "garbage": ((garbage, shrec("381", "vts")), [garbage, "not an OFF file"]),
         "382": ((shrec("382", "off"), missing_landmarks), [missing_landmarks, "cannot open"]),
-        "open": ((opened, six), ["open surface"]),
+        # An open surface against the closed L0 built from 381.
+        "open": ((opened, six), ["boundary loop(s)", "but the base domain is closed"]),
     }
     pairs = [good[0]] + [pair for pair, _ in bad.values()] + [good[1]]
     out = os.path.join(tmp, "out")
@@ -1853,6 +1855,85 @@ def case_missing_landmarks(tmp):
         check_contains(report["models"][name].get("error", ""), "no model has every feature", name + "'s error")
 
 
+def read_off(path):
+    """(points, triangles) of an OFF file of triangles."""
+    with open(path) as f:
+        words = [word for line in f for word in line.split("#", 1)[0].split()]
+    vertices, faces = int(words[1]), int(words[2])
+    numbers = words[4:]
+    points = [tuple(float(x) for x in numbers[3 * i:3 * i + 3]) for i in range(vertices)]
+    rest = numbers[3 * vertices:]
+    triangles = [tuple(int(x) for x in rest[4 * i + 1:4 * i + 4]) for i in range(faces)]
+    return points, triangles
+
+
+def boundary_edges(triangles):
+    """The directed edges (a, b) of the triangles whose reverse no triangle has."""
+    directed = {(t[k], t[(k + 1) % 3]) for t in triangles for k in range(3)}
+    return sorted((a, b) for a, b in directed if (b, a) not in directed)
+
+
+def segment_distance(p, a, b):
+    ab = [b[i] - a[i] for i in range(3)]
+    length = sum(x * x for x in ab)
+    t = 0.0 if length == 0.0 else max(0.0, min(1.0, sum((p[i] - a[i]) * ab[i] for i in range(3)) / length))
+    return math.dist(p, [a[i] + t * ab[i] for i in range(3)])
+
+
+def case_faces_collection(tmp):
+    """consistent-remesh --collection Data/cgal-faces (issue 27 B): three open
+    face and head meshes of libcgal-demo, one boundary loop each, with 7
+    face and 4 boundary landmarks and a shipped open L0. Every model is
+    remeshed with one connectivity whose one boundary loop lies on the
+    model's boundary, landmarks exact, without folds, and averaged."""
+    folder = os.path.join(DATA, "cgal-faces")
+    with open(os.path.join(folder, "collection.json")) as f:
+        names = [model["name"] for model in json.load(f)["models"]]
+    out = os.path.join(tmp, "out")
+    arguments = ["--collection", folder] + ([] if PICTURES else ["--no-render"])
+    status, stdout, stderr, report = run_cli(arguments, out, environment={"CMP_CACHE_DIR": os.path.join(tmp, "cache")})
+    check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
+    check_equal(report["failed"], [], "failed models")
+    check_equal(report["base_domain"].get("boundary_loops"), 1, "the base domain's boundary loops")
+    check_equal(report["base_domain"]["edges"], 26, "the open base domain's edges")
+    connectivity = None
+    for name in names:
+        figures = report["models"][name]["remesh"]
+        check_equal(figures["flipped_triangles"], 0, name + ": folded triangles")
+        check(figures["centroid_flips"] <= 10, "%s: %d centroid flips" % (name, figures["centroid_flips"]))
+        check(figures["hausdorff_per_diagonal"] < 0.03,
+              "%s: Hausdorff distance %g of the diagonal" % (name, figures["hausdorff_per_diagonal"]))
+        remesh = read_vtp(os.path.join(out, name + ".remesh.vtp"))
+        triangles = triangles_of(remesh)
+        if connectivity is None:
+            connectivity = triangles
+        check(triangles == connectivity, name + ": not the collection's connectivity")
+        points = points_of(remesh).tolist()
+        mesh_points, mesh_triangles = read_off(report["models"][name]["mesh"])
+        diagonal = math.dist(*[[f(p[i] for p in mesh_points) for i in range(3)] for f in (min, max)])
+        rim = boundary_edges(mesh_triangles)
+        remesh_rim = {v for edge in boundary_edges(triangles) for v in edge}
+        check(len(remesh_rim) > 4, "%s: the remesh has %d boundary vertices" % (name, len(remesh_rim)))
+        farthest = max(min(segment_distance(points[v], mesh_points[a], mesh_points[b]) for a, b in rim)
+                       for v in remesh_rim)
+        check(farthest < 1e-6 * diagonal, "%s: a remesh boundary vertex is %g of the diagonal off the surface's "
+              "boundary" % (name, farthest / diagonal))
+        with open(report["models"][name]["landmarks"]) as f:
+            ids = [int(line.split("#", 1)[0]) for line in f if line.split("#", 1)[0].strip()]
+        for feature, vertex in enumerate(ids):
+            check(math.dist(points[feature], mesh_points[vertex]) < 1e-9 * diagonal,
+                  "%s: feature %d is not at its landmark" % (name, feature))
+    mean = read_vtp(os.path.join(out, "mean.vtp"))
+    check(triangles_of(mean) == connectivity, "the mean has another connectivity")
+    if PICTURES:
+        check_equal(report["renders"].get("files"), ["inputs.png", "remeshes.png", "mean.png", "pca-modes.png"],
+                    "pictures")
+        if KEEP_PICTURES:
+            os.makedirs(KEEP_PICTURES, exist_ok=True)
+            for picture in report["renders"]["files"] + ["report.md", "report.html"]:
+                shutil.copy(os.path.join(out, picture), KEEP_PICTURES)
+
+
 CASES = {
     "default-collection": case_default_collection,
     "shipped-examples": case_shipped_examples,
@@ -1871,6 +1952,7 @@ CASES = {
     "argument-errors": case_argument_errors,
     "base-domain-mismatch": case_base_domain_mismatch,
     "missing-landmarks": case_missing_landmarks,
+    "faces-collection": case_faces_collection,
 }
 
 
