@@ -14,6 +14,22 @@ Status checkBaseDomain(const BaseDomain& domain, int landmarkCount)
   if (landmarkCount >= 0 && vertices != landmarkCount)
     return Status::error("base domain has " + std::to_string(vertices) + " vertices but the surface has " +
       std::to_string(landmarkCount) + " landmarks; they must match one to one");
+  if (Status s = checkBaseDomainFeatureIds(domain); !s.ok())
+    return s;
+  SurfaceCheckOptions topologyOnly;
+  topologyOnly.checkGeometry = false;
+  const SurfaceCheckResult check = checkSurface(domain.mesh, topologyOnly);
+  if (!check.ok())
+    return Status::error("base domain: " + check.message);
+  return {};
+}
+
+Status checkBaseDomainFeatureIds(const BaseDomain& domain)
+{
+  const int vertices = domain.mesh.vertexCount();
+  if (static_cast<int>(domain.featureIds.size()) != vertices)
+    return Status::error("base domain: " + std::to_string(vertices) + " points but " +
+      std::to_string(domain.featureIds.size()) + " FeatureId values");
   std::vector<int> baseVertexOfFeature(vertices, -1);
   for (int v = 0; v < vertices; ++v)
   {
@@ -26,11 +42,6 @@ Status checkBaseDomain(const BaseDomain& domain, int landmarkCount)
         std::to_string(baseVertexOfFeature[f]) + " and " + std::to_string(v));
     baseVertexOfFeature[f] = v;
   }
-  SurfaceCheckOptions topologyOnly;
-  topologyOnly.checkGeometry = false;
-  const SurfaceCheckResult check = checkSurface(domain.mesh, topologyOnly);
-  if (!check.ok())
-    return Status::error("base domain: " + check.message);
   return {};
 }
 

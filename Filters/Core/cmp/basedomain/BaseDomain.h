@@ -29,6 +29,11 @@ struct BaseDomain
 ///        §2, "Basic Setup").
 Status checkBaseDomain(const BaseDomain& domain, int landmarkCount = -1);
 
+/// \brief Checks that `domain` has one `FeatureId` per vertex, a
+///        permutation of 0..F-1 (the first checks of `checkBaseDomain()`,
+///        for an open L0 too). Fails (Status) naming the first that does not hold.
+Status checkBaseDomainFeatureIds(const BaseDomain& domain);
+
 /// \brief Number of distinct edges of a closed triangulation (3T/2).
 int edgeCount(const TriangleMesh& closedMesh);
 

@@ -58,21 +58,11 @@ Status closeBaseDomain(const BaseDomain& domain, BaseDomain& closed, BaseDomainH
 {
   holes = BaseDomainHoles{};
   const int vertices = domain.mesh.vertexCount();
-  if (static_cast<int>(domain.featureIds.size()) != vertices)
-    return Status::error("base domain: " + std::to_string(vertices) + " points but " +
-      std::to_string(domain.featureIds.size()) + " FeatureId values");
+  if (Status s = checkBaseDomainFeatureIds(domain); !s.ok())
+    return s;
   std::vector<int> vertexOfFeature(vertices, -1);
   for (int v = 0; v < vertices; ++v)
-  {
-    const int f = domain.featureIds[v];
-    if (f < 0 || f >= vertices)
-      return Status::error("base domain: vertex " + std::to_string(v) + " has FeatureId " + std::to_string(f) +
-        ", outside 0.." + std::to_string(vertices - 1));
-    if (vertexOfFeature[f] >= 0)
-      return Status::error("base domain: FeatureId " + std::to_string(f) + " is on vertices " +
-        std::to_string(vertexOfFeature[f]) + " and " + std::to_string(v));
-    vertexOfFeature[f] = v;
-  }
+    vertexOfFeature[domain.featureIds[v]] = v;
   for (const Triangle& t : domain.mesh.triangles)
     for (int v : t)
       if (v < 0 || v >= vertices)

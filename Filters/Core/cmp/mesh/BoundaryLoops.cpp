@@ -12,16 +12,28 @@
 namespace cmp
 {
 
-Status boundaryLoops(const TriangleMesh& mesh, std::vector<std::vector<int>>& loops)
+namespace
 {
-  loops.clear();
-  // Directed edges of the triangles; a boundary edge's reverse is none.
+
+/// The directed edges of the triangles, sorted.
+std::vector<std::pair<int, int>> directedEdges(const TriangleMesh& mesh)
+{
   std::vector<std::pair<int, int>> directed;
   directed.reserve(3 * mesh.triangles.size());
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k)
       directed.emplace_back(t[k], t[(k + 1) % 3]);
   std::sort(directed.begin(), directed.end());
+  return directed;
+}
+
+} // namespace
+
+Status boundaryLoops(const TriangleMesh& mesh, std::vector<std::vector<int>>& loops)
+{
+  loops.clear();
+  // A boundary edge's reverse is no triangle's.
+  const std::vector<std::pair<int, int>> directed = directedEdges(mesh);
   const auto has = [&](int a, int b) { return std::binary_search(directed.begin(), directed.end(), std::make_pair(a, b)); };
   std::map<int, int> next;
   for (const auto& [a, b] : directed)
@@ -106,12 +118,7 @@ Status checkSurfaceWithBoundaries(const TriangleMesh& surface, const std::vector
   }
   // Two triangles that run along an edge the same way would look like a
   // pinched boundary: name them for what they are.
-  std::vector<std::pair<int, int>> directed;
-  directed.reserve(3 * surface.triangles.size());
-  for (const Triangle& t : surface.triangles)
-    for (int k = 0; k < 3; ++k)
-      directed.emplace_back(t[k], t[(k + 1) % 3]);
-  std::sort(directed.begin(), directed.end());
+  const std::vector<std::pair<int, int>> directed = directedEdges(surface);
   int misoriented = 0;
   std::pair<int, int> example;
   for (std::size_t i = 1; i < directed.size(); ++i)
