@@ -111,11 +111,9 @@ cmp::Status buildTransform(const cmp::bridge::ConsistentCollection& collection, 
     ? 0
     : *std::max_element(mesh.levelOfTriangle.begin(), mesh.levelOfTriangle.end());
   if (cmp::Status s = transform.build(mesh); !s.ok())
-    return s.message().find("boundary loops") != std::string::npos
-      ? s
-      : cmp::Status::error("the collection is not a uniform semi-regular remesh (remesh with adaptive "
-                           "tolerance 0): " +
-          s.message());
+    return cmp::Status::error("the collection is not a uniform semi-regular remesh (remesh with adaptive "
+                              "tolerance 0): " +
+      s.message());
   return {};
 }
 

@@ -28,15 +28,28 @@ double relativeDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
 /// Loop subdivision by the textbook rules, written independently of the
 /// transform: the midpoint of edge (a, b) of `coarse` is found as the one
 /// vertex of `fine` adjacent to both a and b that is new at `fine`'s level.
+/// On a boundary (an edge of one coarse triangle) the rules are the cubic
+/// B-spline's: a boundary edge's midpoint is 1/2 (a + b), a boundary vertex
+/// 3/4 of itself and 1/8 of each of its two boundary neighbours.
 Eigen::MatrixXd textbookLoop(const SemiRegularMesh& coarse, const SemiRegularMesh& fine, const Eigen::MatrixXd& x)
 {
   const int evenCount = coarse.vertexCount();
   std::vector<std::set<int>> neighbours(evenCount);
+  std::map<std::pair<int, int>, int> trianglesAtEdge;
   for (const Triangle& t : coarse.triangles)
     for (int k = 0; k < 3; ++k)
     {
-      neighbours[t[k]].insert(t[(k + 1) % 3]);
-      neighbours[t[(k + 1) % 3]].insert(t[k]);
+      const int a = t[k], b = t[(k + 1) % 3];
+      neighbours[a].insert(b);
+      neighbours[b].insert(a);
+      ++trianglesAtEdge[{ std::min(a, b), std::max(a, b) }];
+    }
+  std::vector<std::set<int>> boundaryNeighbours(evenCount);
+  for (const auto& [edge, count] : trianglesAtEdge)
+    if (count == 1)
+    {
+      boundaryNeighbours[edge.first].insert(edge.second);
+      boundaryNeighbours[edge.second].insert(edge.first);
     }
   // In the fine mesh each new vertex is adjacent to exactly two old ones:
   // the endpoints of the edge it splits.
@@ -60,6 +73,14 @@ Eigen::MatrixXd textbookLoop(const SemiRegularMesh& coarse, const SemiRegularMes
   Eigen::MatrixXd y = Eigen::MatrixXd::Zero(fine.vertexCount(), x.cols());
   for (int v = 0; v < evenCount; ++v)
   {
+    if (!boundaryNeighbours[v].empty())
+    {
+      EXPECT_EQ(boundaryNeighbours[v].size(), 2u);
+      y.row(v) = 3.0 / 4.0 * x.row(v);
+      for (int u : boundaryNeighbours[v])
+        y.row(v) += 1.0 / 8.0 * x.row(u);
+      continue;
+    }
     const int n = static_cast<int>(neighbours[v].size());
     const double c = 3.0 / 8.0 + std::cos(2.0 * kPi / n) / 4.0;
     const double beta = (5.0 / 8.0 - c * c) / n;
@@ -71,9 +92,12 @@ Eigen::MatrixXd textbookLoop(const SemiRegularMesh& coarse, const SemiRegularMes
     for (int k = 0; k < 3; ++k)
     {
       const int a = t[k], b = t[(k + 1) % 3], opposite = t[(k + 2) % 3];
-      const int e = midpoint.at({ std::min(a, b), std::max(a, b) });
-      // Each edge is seen from its two triangles: half of 3/8 (a + b) each time.
-      y.row(e) += 3.0 / 16.0 * (x.row(a) + x.row(b)) + 1.0 / 8.0 * x.row(opposite);
+      const std::pair<int, int> edge{ std::min(a, b), std::max(a, b) };
+      const int e = midpoint.at(edge);
+      if (trianglesAtEdge.at(edge) == 1)
+        y.row(e) = 0.5 * (x.row(a) + x.row(b));
+      else // seen from its two triangles: half of 3/8 (a + b) each time
+        y.row(e) += 3.0 / 16.0 * (x.row(a) + x.row(b)) + 1.0 / 8.0 * x.row(opposite);
     }
   return y;
 }
@@ -119,23 +143,52 @@ struct NamedDomain
 {
   std::string name;
   BaseDomain domain;
+  /// Base triangles left out of its remeshes (an open remesh, as of a
+  /// surface with boundaries); empty: closed.
+  std::vector<char> holes;
 };
 
+/// Closed domains, and open remeshes of them: one base triangle left out
+/// (a disk's boundary of 3 base vertices), or two that share no vertex.
 std::vector<NamedDomain> smallDomains()
 {
-  return { { "octahedron", test::octahedronDomain() }, { "tetrahedron", test::tetrahedronDomain() },
-    { "mixed valence", test::mixedValenceDomain() } };
+  const BaseDomain octahedron = test::octahedronDomain(), mixed = test::mixedValenceDomain();
+  std::vector<char> one(octahedron.mesh.triangleCount(), 0), two = one, oneOfMixed(mixed.mesh.triangleCount(), 0);
+  one[0] = 1;
+  oneOfMixed[0] = 1;
+  two[0] = 1;
+  // The octahedron's triangle opposite triangle 0: no vertex in common.
+  for (int t = 1; t < octahedron.mesh.triangleCount(); ++t)
+  {
+    const Triangle &a = octahedron.mesh.triangles[0], &b = octahedron.mesh.triangles[t];
+    if (std::none_of(b.begin(), b.end(), [&](int v) { return std::find(a.begin(), a.end(), v) != a.end(); }))
+      two[t] = 1;
+  }
+  return { { "octahedron", octahedron, {} }, { "tetrahedron", test::tetrahedronDomain(), {} },
+    { "mixed valence", mixed, {} }, { "octahedron, one hole", octahedron, one },
+    { "octahedron, two holes", octahedron, two }, { "mixed valence, one hole", mixed, oneOfMixed } };
+}
+
+/// The uniform remesh of `named` at `level`, open where it has holes.
+SemiRegularMesh remeshOf(const NamedDomain& named, int level)
+{
+  SemiRegularMesh mesh;
+  EXPECT_TRUE(buildSemiRegularMesh(named.domain, level, mesh).ok());
+  if (!named.holes.empty())
+    EXPECT_TRUE(removeHoleTriangles(named.domain, named.holes, mesh).ok());
+  return mesh;
 }
 
 } // namespace
 
 TEST(LoopWavelet, ReconstructsAnyValuesToRounding)
 {
-  for (const auto& [name, domain] : smallDomains())
+  for (const NamedDomain& named : smallDomains())
     for (int level = 0; level <= 4; ++level)
     {
-      SemiRegularMesh mesh;
-      ASSERT_TRUE(buildSemiRegularMesh(domain, level, mesh).ok());
+      const std::string& name = named.name;
+      const BaseDomain& domain = named.domain;
+      const SemiRegularMesh mesh = remeshOf(named, level);
       LoopWaveletTransform transform;
       ASSERT_TRUE(transform.build(mesh).ok());
       for (int columns : { 1, 3, 5 })
@@ -184,11 +237,13 @@ TEST(LoopWavelet, LevelsAreTheCoarserRemeshes)
 TEST(LoopWavelet, ZeroDetailsSynthesizeLoopSubdivision)
 {
   const int finest = 4;
-  for (const auto& [name, domain] : smallDomains())
+  for (const NamedDomain& named : smallDomains())
   {
+    const std::string& name = named.name;
+    const BaseDomain& domain = named.domain;
     std::vector<SemiRegularMesh> meshes(finest + 1);
     for (int l = 0; l <= finest; ++l)
-      ASSERT_TRUE(buildSemiRegularMesh(domain, l, meshes[l]).ok());
+      meshes[l] = remeshOf(named, l);
     LoopWaveletTransform transform;
     ASSERT_TRUE(transform.build(meshes[finest]).ok());
     for (DetailFrame frame : { DetailFrame::Global, DetailFrame::Local })
@@ -217,11 +272,13 @@ TEST(LoopWavelet, EachLevelIsTheLeastSquaresLoopFitOfTheNextFinerOne)
   // is closest to level l (up to the tolerance of its iterative solve);
   // here the fit is computed directly with the textbook Loop matrix.
   const int finest = 3;
-  for (const auto& [name, domain] : smallDomains())
+  for (const NamedDomain& named : smallDomains())
   {
+    const std::string& name = named.name;
+    const BaseDomain& domain = named.domain;
     std::vector<SemiRegularMesh> meshes(finest + 1);
     for (int l = 0; l <= finest; ++l)
-      ASSERT_TRUE(buildSemiRegularMesh(domain, l, meshes[l]).ok());
+      meshes[l] = remeshOf(named, l);
     LoopWaveletTransform transform;
     ASSERT_TRUE(transform.build(meshes[finest]).ok());
     WaveletCoefficients coefficients;
@@ -332,6 +389,24 @@ TEST(LoopWavelet, RejectsBadInput)
   SemiRegularMesh unsorted = mesh;
   std::swap(unsorted.levelOfVertex[0], unsorted.levelOfVertex.back());
   EXPECT_FALSE(transform.build(unsorted).ok());
+
+  // Two holes that meet at one base vertex: a vertex on four boundary
+  // edges, where Loop's boundary rule is not defined.
+  std::vector<char> pinched(domain.mesh.triangleCount(), 0);
+  pinched[0] = 1;
+  for (int t = 1; t < domain.mesh.triangleCount(); ++t)
+  {
+    const Triangle &a = domain.mesh.triangles[0], &b = domain.mesh.triangles[t];
+    if (std::count_if(b.begin(), b.end(), [&](int v) { return std::find(a.begin(), a.end(), v) != a.end(); }) == 1)
+    {
+      pinched[t] = 1;
+      break;
+    }
+  }
+  SemiRegularMesh open = mesh;
+  ASSERT_TRUE(removeHoleTriangles(domain, pinched, open).ok());
+  const Status pinch = transform.build(open);
+  EXPECT_NE(pinch.message().find("4 boundary edges"), std::string::npos) << pinch.message();
 
   ASSERT_TRUE(transform.build(mesh).ok());
   const int n = mesh.vertexCount();

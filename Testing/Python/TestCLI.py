@@ -1885,12 +1885,14 @@ def case_faces_collection(tmp):
     face and head meshes of libcgal-demo, one boundary loop each, with 7
     face and 4 boundary landmarks and a shipped open L0. Every model is
     remeshed with one connectivity whose one boundary loop lies on the
-    model's boundary, landmarks exact, without folds, and averaged."""
+    model's boundary, landmarks exact, without folds, and averaged; the
+    lion's wavelet details are put on the other faces (Loop's boundary
+    rules), and their boundaries stay with the faces'."""
     folder = os.path.join(DATA, "cgal-faces")
     with open(os.path.join(folder, "collection.json")) as f:
         names = [model["name"] for model in json.load(f)["models"]]
     out = os.path.join(tmp, "out")
-    arguments = ["--collection", folder] + ([] if PICTURES else ["--no-render"])
+    arguments = ["--collection", folder, "--details-from", "lion-head"] + ([] if PICTURES else ["--no-render"])
     status, stdout, stderr, report = run_cli(arguments, out, environment={"CMP_CACHE_DIR": os.path.join(tmp, "cache")})
     check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
     check_equal(report["failed"], [], "failed models")
@@ -1925,6 +1927,23 @@ def case_faces_collection(tmp):
                   "%s: feature %d is not at its landmark" % (name, feature))
     mean = read_vtp(os.path.join(out, "mean.vtp"))
     check(triangles_of(mean) == connectivity, "the mean has another connectivity")
+    import numpy
+    details = report.get("details", {})
+    check("error" not in details, "details from lion-head: %s" % details.get("error"))
+    check_equal(sorted(details.get("targets", {})), sorted(n for n in names if n != "lion-head"), "details' targets")
+    rim = sorted({v for edge in boundary_edges(connectivity) for v in edge})
+    for name in details.get("targets", {}):
+        coarse = points_of(read_vtp(os.path.join(out, name + ".remesh.vtp")))
+        detailed = read_vtp(os.path.join(out, details["targets"][name]["file"]))
+        check(triangles_of(detailed) == connectivity, name + " with the lion's details: another connectivity")
+        moved = numpy.linalg.norm(points_of(detailed) - coarse, axis=1)
+        diagonal = numpy.linalg.norm(coarse.max(axis=0) - coarse.min(axis=0))
+        check(bool(numpy.isfinite(moved).all()) and moved.mean() > 1e-3 * diagonal,
+              "%s: the lion's details moved its vertices by a mean %g of the diagonal" % (name, moved.mean() / diagonal))
+        # Measured 2.5% at most (the details of the lion's rim put on the
+        # face's): the boundary keeps to the face's own.
+        check(moved[rim].max() < 0.1 * diagonal, "%s: a boundary vertex moved %g of the diagonal with the lion's "
+              "details" % (name, moved[rim].max() / diagonal))
     if PICTURES:
         check_equal(report["renders"].get("files"), ["inputs.png", "remeshes.png", "mean.png", "pca-modes.png"],
                     "pictures")

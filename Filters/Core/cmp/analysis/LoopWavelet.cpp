@@ -1,5 +1,4 @@
 #include <cmp/analysis/LoopWavelet.h>
-#include <cmp/mesh/BoundaryLoops.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
@@ -61,6 +60,24 @@
 // from level to level; with the 1-rings of a, b, c, d the coarsest level
 // still kept several times more noise than the least-squares fit.
 //
+// At a boundary (an open remesh, beyond the paper) Loop's rules are the
+// cubic B-spline's along the boundary curve (Hoppe et al. 1994, Biermann
+// et al. 2000 keep them): an odd vertex on a boundary edge (a, b), which
+// has no vertex d, is y_e = 1/2 (x_a + x_b); a boundary even vertex v with
+// boundary neighbours p and q is y_v = 3/4 x_v + 1/8 (x_p + x_q), and no
+// interior value enters either, so the boundary curve subdivides on its
+// own. The same four lifting steps factor them: S2 predicts a boundary odd
+// vertex from a and b by 1/2 each; a boundary even vertex is scaled by 1/2
+// in S3 and lifted in S4 by delta = 1/4 from its two boundary odd vertices
+// only (the odd vertices on its interior edges lift it by 0), since with
+// d = 0 those two are 1/2 (x_v + x_p) and 1/2 (x_v + x_q), and
+//   1/2 x_v + 1/4 (x_v + 1/2 (x_p + x_q)) = 3/4 x_v + 1/8 (x_p + x_q). An
+// interior even vertex keeps Loop's interior rule, also next to the
+// boundary, and an odd vertex on an interior edge keeps 3/8 and 1/8. Each
+// odd vertex thus lifts its two ends by its own weights (`endLift`): delta
+// of the end for an interior end, 0 for a boundary end of an interior
+// edge, 1/4 for both ends of a boundary edge; W and the update follow.
+//
 // Local detail frames (DetailFrame::Local) come from the surface predicted
 // from level l-1, its Loop subdivision: the normal at the odd vertex is the
 // area-weighted normal of its predicted triangles, the first tangent its
@@ -119,7 +136,8 @@ Status countLevelVertices(const SemiRegularMesh& mesh, std::vector<int>& vertexC
 /// Recovers level l-1 from level l: every four consecutive triangles of
 /// level l are the quadrisection (a, ab, ca), (ab, b, bc), (ca, bc, c),
 /// (ab, bc, ca) of one triangle (a, b, c). Records for each odd vertex its
-/// edge a->b and the vertices left (c) and right (d) of it.
+/// edge a->b and the vertices left (c) and right (d) of it; d is -1 on a
+/// boundary edge, which one coarser triangle has.
 Status coarsen(const std::vector<Triangle>& fine, int evenCount, int oddCount, std::vector<Triangle>& coarse,
   std::vector<std::array<int, 4>>& stencil)
 {
@@ -155,27 +173,39 @@ Status coarsen(const std::vector<Triangle>& fine, int evenCount, int oddCount, s
     coarse.push_back({ { a, b, c } });
   }
   for (int i = 0; i < oddCount; ++i)
-    if (stencil[i][3] < 0 || stencil[i][2] == stencil[i][3])
-      return notUniform("vertex " + std::to_string(evenCount + i) + " is not inside two coarser triangles");
+    if (stencil[i][0] < 0 || stencil[i][2] == stencil[i][3])
+      return notUniform("vertex " + std::to_string(evenCount + i) + " is not on an edge of two coarser triangles or "
+                                                                    "of the boundary");
   return {};
 }
 
 /// Column p of the level's subdivision matrix is the Loop scaling function
 /// of even vertex p sampled at level l. Rows: evens, then odd vertices.
-Eigen::SparseMatrix<double> subdivisionMatrix(
-  const std::vector<std::array<int, 4>>& stencil, const std::vector<int>& valence, const std::vector<double>& beta)
+/// `beta` is 0 for a boundary even vertex, which has the boundary rule.
+Eigen::SparseMatrix<double> subdivisionMatrix(const std::vector<std::array<int, 4>>& stencil,
+  const std::vector<int>& valence, const std::vector<double>& beta, const std::vector<char>& boundary)
 {
   const int evenCount = static_cast<int>(valence.size());
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(evenCount + 6 * stencil.size());
   for (int v = 0; v < evenCount; ++v)
-    entries.emplace_back(v, v, 1.0 - valence[v] * beta[v]);
+    entries.emplace_back(v, v, boundary[v] ? 3.0 / 4.0 : 1.0 - valence[v] * beta[v]);
   for (int i = 0; i < static_cast<int>(stencil.size()); ++i)
   {
     const auto [a, b, c, d] = stencil[i];
-    entries.emplace_back(a, b, beta[a]);
-    entries.emplace_back(b, a, beta[b]);
     const int e = evenCount + i;
+    if (d < 0) // a boundary edge
+    {
+      entries.emplace_back(a, b, 1.0 / 8.0);
+      entries.emplace_back(b, a, 1.0 / 8.0);
+      entries.emplace_back(e, a, 1.0 / 2.0);
+      entries.emplace_back(e, b, 1.0 / 2.0);
+      continue;
+    }
+    if (!boundary[a])
+      entries.emplace_back(a, b, beta[a]);
+    if (!boundary[b])
+      entries.emplace_back(b, a, beta[b]);
     entries.emplace_back(e, a, 3.0 / 8.0);
     entries.emplace_back(e, b, 3.0 / 8.0);
     entries.emplace_back(e, c, 1.0 / 8.0);
@@ -184,6 +214,15 @@ Eigen::SparseMatrix<double> subdivisionMatrix(
   Eigen::SparseMatrix<double> s(evenCount + static_cast<int>(stencil.size()), evenCount);
   s.setFromTriplets(entries.begin(), entries.end());
   return s;
+}
+
+/// Loop's odd rule at the odd vertex of `s` from the even values `y`: 3/8
+/// and 1/8 inside, 1/2 and 1/2 on a boundary edge.
+double predict(const std::array<int, 4>& s, const double* y)
+{
+  if (s[3] < 0)
+    return 0.5 * (y[s[0]] + y[s[1]]);
+  return 3.0 / 8.0 * (y[s[0]] + y[s[1]]) + 1.0 / 8.0 * (y[s[2]] + y[s[3]]);
 }
 
 /// An orthonormal frame with `normal` as its third axis and `along`,
@@ -212,10 +251,14 @@ Eigen::Matrix3d orthonormalFrame(const Vec3& normal, const Vec3& along)
 struct LoopWaveletTransform::Level
 {
   /// \brief Per odd vertex (vertex V_{l-1} + i): the endpoints a, b of its
-  ///        parent edge, then c to the left of a->b and d to the right.
+  ///        parent edge, then c to the left of a->b and d to the right (-1
+  ///        on a boundary edge).
   std::vector<std::array<int, 4>> stencil;
-  std::vector<double> evenLift;  ///< Per even vertex: delta = 8 beta / 5.
-  std::vector<double> evenScale; ///< Per even vertex: 1 - n delta.
+  /// \brief Per odd vertex: how much it lifts a and b in S4, delta =
+  ///         8 beta / 5 of an interior end, 0 of a boundary end of an
+  ///         interior edge, 1/4 of each end of a boundary edge.
+  std::vector<std::array<double, 2>> endLift;
+  std::vector<double> evenScale; ///< Per even vertex: 1 - n delta, or 1/2 on the boundary.
   RowMajorSparse gram;                       ///< G = S^T S (evens x evens).
   RowMajorSparse lazyProducts;               ///< S^T W (evens x odds).
   Eigen::VectorXd inverseDiagonal;           ///< 1 / diag(G), the preconditioner.
@@ -223,7 +266,7 @@ struct LoopWaveletTransform::Level
   int chebyshevSteps = 0;                    ///< Steps of the update's solve.
 
   Status build(const std::vector<Triangle>& fine, int evenCount, int oddCount, std::vector<Triangle>& coarse);
-  void buildUpdate(const std::vector<int>& valence, const std::vector<double>& beta);
+  void buildUpdate(const std::vector<int>& valence, const std::vector<double>& beta, const std::vector<char>& boundary);
   Eigen::MatrixXd update(const Eigen::Ref<const Eigen::MatrixXd>& details) const;
   void analyze(Eigen::MatrixXd& values) const;
   void subdivide(Eigen::MatrixXd& values) const;
@@ -232,7 +275,7 @@ struct LoopWaveletTransform::Level
   void detailsToLocal(
     const Eigen::MatrixXd& approximation, const std::vector<Triangle>& fine, Eigen::MatrixXd& coefficients) const;
   void detailsToGlobal(const std::vector<Triangle>& fine, Eigen::MatrixXd& values) const;
-  int evenCount() const { return static_cast<int>(evenLift.size()); }
+  int evenCount() const { return static_cast<int>(evenScale.size()); }
   int oddCount() const { return static_cast<int>(stencil.size()); }
 };
 
@@ -241,38 +284,62 @@ Status LoopWaveletTransform::Level::build(
 {
   if (Status s = coarsen(fine, evenCount, oddCount, coarse, stencil); !s.ok())
     return s;
-  std::vector<int> valence(evenCount, 0);
+  std::vector<int> valence(evenCount, 0), boundaryEdges(evenCount, 0);
   for (const auto& s : stencil)
   {
     ++valence[s[0]];
     ++valence[s[1]];
+    if (s[3] < 0)
+    {
+      ++boundaryEdges[s[0]];
+      ++boundaryEdges[s[1]];
+    }
   }
-  std::vector<double> beta(evenCount);
-  evenLift.resize(evenCount);
+  std::vector<double> beta(evenCount, 0.0), evenLift(evenCount, 0.0);
+  std::vector<char> boundary(evenCount, 0);
   evenScale.resize(evenCount);
   for (int v = 0; v < evenCount; ++v)
   {
+    if (boundaryEdges[v] != 0 && boundaryEdges[v] != 2)
+      return notUniform("vertex " + std::to_string(v) + " is on " + std::to_string(boundaryEdges[v]) +
+        " boundary edges (a boundary vertex is on 2)");
+    boundary[v] = boundaryEdges[v] == 2;
+    if (boundary[v])
+    {
+      evenScale[v] = 0.5;
+      continue;
+    }
     if (valence[v] < 3)
       return notUniform("vertex " + std::to_string(v) + " has valence " + std::to_string(valence[v]));
     beta[v] = loopBeta(valence[v]);
     evenLift[v] = 8.0 / 5.0 * beta[v];
     evenScale[v] = 1.0 - valence[v] * evenLift[v];
   }
-  buildUpdate(valence, beta);
+  endLift.resize(stencil.size());
+  for (std::size_t i = 0; i < stencil.size(); ++i)
+  {
+    const auto& s = stencil[i];
+    if (s[3] < 0)
+      endLift[i] = { { 0.25, 0.25 } };
+    else
+      endLift[i] = { { boundary[s[0]] ? 0.0 : evenLift[s[0]], boundary[s[1]] ? 0.0 : evenLift[s[1]] } };
+  }
+  buildUpdate(valence, beta, boundary);
   return {};
 }
 
-void LoopWaveletTransform::Level::buildUpdate(const std::vector<int>& valence, const std::vector<double>& beta)
+void LoopWaveletTransform::Level::buildUpdate(
+  const std::vector<int>& valence, const std::vector<double>& beta, const std::vector<char>& boundary)
 {
   const int evens = evenCount(), odds = oddCount();
-  const Eigen::SparseMatrix<double> subdivision = subdivisionMatrix(stencil, valence, beta);
+  const Eigen::SparseMatrix<double> subdivision = subdivisionMatrix(stencil, valence, beta, boundary);
   std::vector<Eigen::Triplet<double>> lazy;
   lazy.reserve(3 * odds);
   for (int i = 0; i < odds; ++i)
   {
     lazy.emplace_back(evens + i, i, 1.0);
-    lazy.emplace_back(stencil[i][0], i, evenLift[stencil[i][0]]);
-    lazy.emplace_back(stencil[i][1], i, evenLift[stencil[i][1]]);
+    lazy.emplace_back(stencil[i][0], i, endLift[i][0]);
+    lazy.emplace_back(stencil[i][1], i, endLift[i][1]);
   }
   Eigen::SparseMatrix<double> lazyWavelets(evens + odds, odds);
   lazyWavelets.setFromTriplets(lazy.begin(), lazy.end());
@@ -326,16 +393,13 @@ void LoopWaveletTransform::Level::analyze(Eigen::MatrixXd& values) const
     for (int i = 0; i < odds; ++i) // A1
     {
       const auto& s = stencil[i];
-      y[s[0]] -= evenLift[s[0]] * y[evens + i];
-      y[s[1]] -= evenLift[s[1]] * y[evens + i];
+      y[s[0]] -= endLift[i][0] * y[evens + i];
+      y[s[1]] -= endLift[i][1] * y[evens + i];
     }
     for (int v = 0; v < evens; ++v) // A2
       y[v] /= evenScale[v];
     for (int i = 0; i < odds; ++i) // A3
-    {
-      const auto& s = stencil[i];
-      y[evens + i] -= 3.0 / 8.0 * (y[s[0]] + y[s[1]]) + 1.0 / 8.0 * (y[s[2]] + y[s[3]]);
-    }
+      y[evens + i] -= predict(stencil[i], y);
   }
   values.topRows(evens) += update(values.middleRows(evens, odds)); // A4
 }
@@ -347,17 +411,14 @@ void LoopWaveletTransform::Level::subdivide(Eigen::MatrixXd& values) const
   {
     double* y = values.col(column).data();
     for (int i = 0; i < odds; ++i) // S2
-    {
-      const auto& s = stencil[i];
-      y[evens + i] += 3.0 / 8.0 * (y[s[0]] + y[s[1]]) + 1.0 / 8.0 * (y[s[2]] + y[s[3]]);
-    }
+      y[evens + i] += predict(stencil[i], y);
     for (int v = 0; v < evens; ++v) // S3
       y[v] *= evenScale[v];
     for (int i = 0; i < odds; ++i) // S4
     {
       const auto& s = stencil[i];
-      y[s[0]] += evenLift[s[0]] * y[evens + i];
-      y[s[1]] += evenLift[s[1]] * y[evens + i];
+      y[s[0]] += endLift[i][0] * y[evens + i];
+      y[s[1]] += endLift[i][1] * y[evens + i];
     }
   }
 }
@@ -424,13 +485,6 @@ LoopWaveletTransform& LoopWaveletTransform::operator=(LoopWaveletTransform&&) no
 Status LoopWaveletTransform::build(const SemiRegularMesh& mesh)
 {
   *this = LoopWaveletTransform{};
-  // Loop's rules here are those of a closed surface: an open remesh (a
-  // surface with boundaries, issue 27 B) would need boundary rules.
-  std::vector<std::vector<int>> loops;
-  if (Status s = boundaryLoops(TriangleMesh{ std::vector<Vec3>(mesh.vertexCount(), Vec3::Zero()), mesh.triangles }, loops);
-      !s.ok() || !loops.empty())
-    return Status::error("the wavelet transform needs a closed remesh, and this one has boundary loops (an open "
-                         "surface): wavelet details of surfaces with boundaries are not supported yet");
   std::vector<int> vertexCount;
   if (Status s = countLevelVertices(mesh, vertexCount); !s.ok())
     return s;

@@ -68,6 +68,12 @@ struct WaveletCoefficients
 /// linear, cost O(vertices) and reconstruct exactly up to rounding. The
 /// lifting steps are documented in LoopWavelet.cpp. Paper §3: the
 /// "Loop-based wavelets" of its detail transfer (its reference [5]).
+///
+/// An open remesh (a surface with boundaries, `RemeshOptions::holeTriangles`;
+/// beyond the paper) has Loop's boundary rules: the boundary curve is
+/// subdivided as a cubic B-spline of its own values (odd 1/2, 1/2; even
+/// 3/4, 1/8, 1/8) from boundary values alone, and the interior by Loop's
+/// interior rules.
 class LoopWaveletTransform
 {
 public:
@@ -76,8 +82,10 @@ public:
   ///        adaptive remesh.
   /// Fails (Status) on any other connectivity: a level out of range, a
   /// triangle count that is not a multiple of 4^level, triangles of several
-  /// levels, vertices not numbered level by level, or levels that are not
-  /// quadrisections of a closed coarser mesh. The transform is then empty.
+  /// levels, vertices not numbered level by level, levels that are not
+  /// quadrisections of a coarser mesh, or a coarser mesh that is not a
+  /// manifold (an edge of more than two triangles, a vertex on more than
+  /// two boundary edges). The transform is then empty.
   Status build(const SemiRegularMesh& mesh);
 
   /// \brief The finest level J (-1 before a successful `build()`).
