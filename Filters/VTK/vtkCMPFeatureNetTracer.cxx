@@ -166,7 +166,7 @@ int vtkCMPFeatureNetTracer::RequestData(
   if (status.ok())
     status = cmp::bridge::toClosedBaseDomain(baseInput, domain, holes, static_cast<int>(landmarks.size()));
   if (status.ok())
-    status = cmp::bridge::toClosedSurface(input, landmarks, holes, surface);
+    status = cmp::bridge::toClosedSurface(std::move(asGiven), landmarks, holes, surface);
   const cmp::TriangleMesh& mesh = surface.open;
   cmp::TracedNet net;
   cmp::NetTracerReport report;

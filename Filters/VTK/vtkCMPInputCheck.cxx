@@ -10,6 +10,8 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
+#include <utility>
+
 vtkStandardNewMacro(vtkCMPInputCheck);
 
 vtkCMPInputCheck::vtkCMPInputCheck()
@@ -60,12 +62,12 @@ cmp::Status checkInputs(vtkPolyData* surface, vtkPolyData* baseDomain, bool requ
   const bool openSurface = cmp::boundaryLoops(mesh, loops).ok() && !loops.empty();
   cmp::bridge::ClosedSurface closed;
   if (openSurface == holes.empty())
-    return cmp::bridge::toClosedSurface(surface, landmarks, holes, closed);
+    return cmp::bridge::toClosedSurface(std::move(mesh), landmarks, holes, closed);
   if (static_cast<int>(landmarks.size()) != holes.openVertexCount)
     return cmp::Status::error("base domain has " + std::to_string(holes.openVertexCount) +
       " vertices but the surface has " + std::to_string(landmarks.size()) +
       " landmarks; they must match one to one");
-  return cmp::bridge::toClosedSurface(surface, landmarks, holes, closed);
+  return cmp::bridge::toClosedSurface(std::move(mesh), landmarks, holes, closed);
 }
 
 } // namespace

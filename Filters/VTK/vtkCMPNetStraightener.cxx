@@ -23,6 +23,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkCMPNetStraightener);
@@ -172,7 +173,7 @@ int vtkCMPNetStraightener::RequestData(
   if (status.ok())
     status = cmp::bridge::toClosedBaseDomain(baseInput, domain, holes, static_cast<int>(landmarks.size()));
   if (status.ok())
-    status = cmp::bridge::toClosedSurface(input, landmarks, holes, surface);
+    status = cmp::bridge::toClosedSurface(std::move(asGiven), landmarks, holes, surface);
   if (status.ok())
     status = cmp::bridge::readPatchIds(input, patchIds);
   if (status.ok())

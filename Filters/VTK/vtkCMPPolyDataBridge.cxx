@@ -164,21 +164,18 @@ Status toClosedBaseDomain(vtkPolyData* input, BaseDomain& domain, BaseDomainHole
   return closeBaseDomain(open, domain, holes);
 }
 
-Status toClosedSurface(vtkPolyData* input, const LandmarkList& landmarks, const BaseDomainHoles& holes,
+Status toClosedSurface(TriangleMesh checked, const LandmarkList& landmarks, const BaseDomainHoles& holes,
   ClosedSurface& out)
 {
   out = ClosedSurface{};
-  if (Status s = toTriangleMesh(input, out.open); !s.ok())
-    return s;
-  // The surface's own defects first (a fin, a flipped triangle), then the
-  // contract of its boundary loops against L0's.
-  if (Status s = checkSurfaceWithBoundaries(out.open); !s.ok())
-    return s;
+  out.open = std::move(checked);
   if (Status s = closeSurface(out.open, landmarks, holes, out.closed, out.closedLandmarks, out.holes); !s.ok())
     return s;
+  if (holes.empty())
+    return {}; // closed as given, and checked
   const SurfaceCheckResult check = checkSurface(out.closed);
   if (!check.ok())
-    return Status::error(holes.empty() ? check.message : check.message + " (the surface with its boundary loops capped)");
+    return Status::error(check.message + " (the surface with its boundary loops capped)");
   return {};
 }
 

@@ -79,11 +79,13 @@ struct ClosedSurface
   SurfaceHoles holes;
 };
 
-/// \brief Reads `input` and closes it against `holes` (L0's), checking the
-///        contract of surfaces with boundaries and the closed surface.
-///        Fails (Status) on what `toTriangleMesh()`, `closeSurface()` or
+/// \brief Closes a surface read and checked by
+///        `toCheckedSurfaceWithBoundaries()` (`checked`, taken over) against
+///        `holes` (L0's): checks the contract of surfaces with boundaries
+///        and the capped surface, so that a filter reads and checks its
+///        input once. Fails (Status) on what `closeSurface()` or
 ///        `checkSurface()` refuse, in the user's terms.
-Status toClosedSurface(vtkPolyData* input, const LandmarkList& landmarks, const BaseDomainHoles& holes,
+Status toClosedSurface(TriangleMesh checked, const LandmarkList& landmarks, const BaseDomainHoles& holes,
   ClosedSurface& out);
 
 /// \brief Builds a polydata of points and triangles.
