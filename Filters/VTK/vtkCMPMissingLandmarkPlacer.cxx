@@ -62,7 +62,7 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
   for (std::size_t m = 0; m < count; ++m)
   {
     meshes.push_back(std::make_unique<cmp::TriangleMesh>());
-    if (cmp::Status s = cmp::bridge::toCheckedSurface(collection.surfaces[m], *meshes[m]); !s.ok())
+    if (cmp::Status s = cmp::bridge::toCheckedSurfaceWithBoundaries(collection.surfaces[m], *meshes[m]); !s.ok())
       return fail(collection.labels[m] + s.message());
     if (cmp::Status s = cmp::bridge::readLandmarks(collection.surfaces[m], landmarks[m], true); !s.ok())
       return fail(collection.labels[m] + s.message());

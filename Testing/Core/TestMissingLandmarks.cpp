@@ -1,4 +1,5 @@
 #include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/mesh/BoundaryLoops.h>
 #include <cmp/remesh/MissingLandmarks.h>
 #include "TestMeshes.h"
 
@@ -6,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <string>
 
 using namespace cmp;
 
@@ -160,4 +163,75 @@ TEST(MissingLandmarks, IdenticalModelsGiveTheTrueVertexWithAnyThreadsAndSources)
     EXPECT_EQ(report.placed[0].sources, sources == 0 ? 3 : sources);
     EXPECT_EQ(landmarks[0], truth);
   }
+}
+
+// Surfaces with boundaries (issue 27 A on open models): the models cut open
+// round their back (feature 12, as OpenSurface's tests cut them), and inner
+// features taken away are placed as on closed models, never on the
+// boundary; a boundary feature cannot be placed.
+TEST(MissingLandmarks, PlacesInnerLandmarksOnOpenModels)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const BaseDomain domain = test::realBaseDomain("381");
+  std::vector<test::OpenModel> models;
+  const std::vector<std::string> names{ "381", "383", "384", "388", "391" };
+  for (const std::string& name : names)
+  {
+    const test::LandmarkedModel model = test::landmarkedRealModel(name);
+    test::OpenModel open;
+    const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, domain, 12, 0.4, open);
+    ASSERT_TRUE(cut.ok()) << name << ": " << cut.message();
+    models.push_back(std::move(open));
+  }
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+  for (const test::OpenModel& model : models)
+  {
+    surfaces.push_back(&model.surface);
+    landmarks.push_back(model.landmarks);
+  }
+  // As on the closed models: features 3 and 17 of one model, the tail's
+  // root (13) of another; above the cut feature 12 they are 16 and 12.
+  const std::vector<std::pair<int, int>> taken = { { 1, 3 }, { 1, 16 }, { 3, 12 } };
+  for (auto [m, f] : taken)
+    landmarks[m][f] = kMissingLandmark;
+
+  MissingLandmarkReport report;
+  const Status status = placeMissingLandmarks(surfaces, landmarks, {}, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  for (std::size_t m = 0; m < models.size(); ++m)
+    EXPECT_EQ(report.modelErrors[m], "") << names[m];
+  ASSERT_EQ(report.placed.size(), taken.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < taken.size(); ++i)
+  {
+    const auto [m, f] = taken[i];
+    const PlacedLandmark& placed = report.placed[i];
+    EXPECT_EQ(placed.feature, f);
+    const TriangleMesh& mesh = models[m].surface;
+    const double error =
+      (mesh.points[placed.vertex] - mesh.points[models[m].landmarks[f]]).norm() / std::sqrt(surfaceArea(mesh));
+    std::cout << names[m] << " feature " << f << ": placed " << error << " of sqrt(area) from the true one\n";
+    sum += error;
+    EXPECT_LT(error, 0.12) << names[m] << " feature " << f;
+  }
+  EXPECT_LT(sum / taken.size(), 0.05);
+  // Each model now fits the open L0's contract, its boundary landmarks as
+  // they were.
+  for (std::size_t m = 0; m < models.size(); ++m)
+  {
+    EXPECT_TRUE(checkSurfaceWithBoundaries(models[m].surface, &landmarks[m]).ok()) << names[m];
+    for (std::size_t f = 0; f < landmarks[m].size(); ++f)
+      if (std::none_of(taken.begin(), taken.end(), [&](auto t) { return t.first == static_cast<int>(m) && t.second == static_cast<int>(f); }))
+        EXPECT_EQ(landmarks[m][f], models[m].landmarks[f]) << names[m] << " feature " << f;
+  }
+
+  // A boundary landmark (the last features are the cut's) cannot be placed.
+  landmarks.clear();
+  for (const test::OpenModel& model : models)
+    landmarks.push_back(model.landmarks);
+  const int boundaryFeature = static_cast<int>(landmarks[0].size()) - 1;
+  landmarks[2][boundaryFeature] = kMissingLandmark;
+  expectError(placeMissingLandmarks(surfaces, landmarks),
+    "feature " + std::to_string(boundaryFeature) + " lies on model 0's boundary: a boundary landmark cannot be placed");
 }

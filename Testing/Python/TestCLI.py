@@ -1953,6 +1953,58 @@ def case_faces_collection(tmp):
                 shutil.copy(os.path.join(out, picture), KEEP_PICTURES)
 
 
+def case_open_missing_landmarks(tmp):
+    """Issue 27 A on open surfaces: the packaged faces with an inner
+    feature marked missing (-1) on two of them (the mask's left mouth
+    corner, the devil's nose tip). The collection places them over its
+    open L0, never on the boundary, within 12% of the square root of the
+    area of the true ones, and remeshes every model with one open
+    connectivity."""
+    import numpy
+    source = os.path.join(DATA, "cgal-faces")
+    folder = os.path.join(tmp, "faces")
+    shutil.copytree(source, folder, ignore=shutil.ignore_patterns("tools", "*.md"))
+    missing = {"nefertiti": 4, "mannequin-devil": 0}
+    truth = {}
+    for name, feature in missing.items():
+        path = os.path.join(folder, name + ".landmarks")
+        with open(path) as f:
+            lines = f.read().splitlines()
+        rows = [i for i, line in enumerate(lines) if line.split("#", 1)[0].strip()]
+        truth[name] = int(lines[rows[feature]].split("#", 1)[0])
+        lines[rows[feature]] = "-1  # marked missing by the test"
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+    out = os.path.join(tmp, "out")
+    status, stdout, stderr, report = run_cli(["--collection", folder, "--no-render"], out,
+                                             environment={"CMP_CACHE_DIR": os.path.join(tmp, "cache")})
+    check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
+    check_equal(report["failed"], [], "failed models")
+    check_equal(report["placement"]["models"], sorted(missing), "models placed on")
+    connectivity = None
+    for name in ["lion-head", "mannequin-devil", "nefertiti"]:
+        remesh = read_vtp(os.path.join(out, name + ".remesh.vtp"))
+        triangles = triangles_of(remesh)
+        connectivity = connectivity or triangles
+        check(triangles == connectivity, name + ": not the collection's connectivity")
+        if name not in missing:
+            continue
+        placed = report["models"][name].get("placed_landmarks") or [{}]
+        check_equal([entry.get("feature") for entry in placed], [missing[name]], name + ": placed features")
+        points, mesh_triangles = read_off(report["models"][name]["mesh"])
+        rim = {v for edge in boundary_edges(mesh_triangles) for v in edge}
+        vertex = placed[0].get("vertex")
+        check(vertex not in rim, "%s: feature %d placed on the boundary" % (name, missing[name]))
+        p = numpy.array(points)
+        t = numpy.array(mesh_triangles)
+        area = 0.5 * numpy.linalg.norm(numpy.cross(p[t[:, 1]] - p[t[:, 0]], p[t[:, 2]] - p[t[:, 0]]), axis=1).sum()
+        error = math.dist(points[vertex], points[truth[name]]) / math.sqrt(area)
+        # Measured 3.2% (the mask) and 4.9% (the devil).
+        check(error < 0.12, "%s: feature %d placed %.3f of sqrt(area) from the true one" % (name, missing[name], error))
+        check(math.dist(points_of(remesh)[missing[name]], points[vertex]) < 1e-9 * math.sqrt(area),
+              "%s: the remesh's vertex %d is not at the placed landmark" % (name, missing[name]))
+
+
 CASES = {
     "default-collection": case_default_collection,
     "shipped-examples": case_shipped_examples,
@@ -1972,6 +2024,7 @@ CASES = {
     "base-domain-mismatch": case_base_domain_mismatch,
     "missing-landmarks": case_missing_landmarks,
     "faces-collection": case_faces_collection,
+    "open-missing-landmarks": case_open_missing_landmarks,
 }
 
 

@@ -2,6 +2,8 @@
 
 #include <cmp/basedomain/BaseDomainBuilder.h>
 #include <cmp/layout/NetTracer.h>
+#include <cmp/layout/OpenSurface.h>
+#include <cmp/mesh/BoundaryLoops.h>
 #include <cmp/mesh/SurfaceDistance.h>
 #include <cmp/numerics/Threads.h>
 #include <cmp/remesh/Remesh.h>
@@ -170,12 +172,23 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
         chosen.push_back(m);
     members = chosen;
   }
-  BaseDomain domain;
-  if (Status s = buildBaseDomain(*surfaces[source], reduced(source), domain); !s.ok())
+  BaseDomain openDomain, domain;
+  BaseDomainHoles holes;
+  if (Status s = buildBaseDomain(*surfaces[source], reduced(source), openDomain); !s.ok())
     return Status::error("the base domain without the missing features: " + s.message());
+  // Surfaces with boundaries: every stage runs on them closed, as the
+  // filters run them (the reduced L0 is open when the models are).
+  if (Status s = closeBaseDomain(openDomain, domain, holes); !s.ok())
+    return Status::error("the base domain without the missing features: " + s.message());
+  StraightenOptions straightening = options.straighten;
+  straightening.net.keptFeatures = holes.keptFeatures();
+  straightening.map.fixedPatches = holes.empty() ? std::vector<char>() : holes.holeTriangle;
 
   struct Mapped
   {
+    TriangleMesh closed;
+    LandmarkList closedLandmarks;
+    SurfaceHoles holes;
     TracedNet traced;
     StraightenedNet straight;
     PatchParameterization map;
@@ -191,9 +204,13 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     [&](int i) {
       const int m = members[i];
       auto one = std::make_unique<Mapped>();
-      statuses[i] = traceFeatureNet(*surfaces[m], reduced(m), domain, one->traced);
+      statuses[i] = closeSurface(*surfaces[m], reduced(m), holes, one->closed, one->closedLandmarks, one->holes);
+      NetTracerOptions tracing;
+      tracing.presetCurves = one->holes.curves; // the caps' curves, traced already
       if (statuses[i].ok())
-        statuses[i] = straighten(one->traced, domain, one->straight, one->map, options.straighten);
+        statuses[i] = traceFeatureNet(one->closed, one->closedLandmarks, domain, one->traced, tracing);
+      if (statuses[i].ok())
+        statuses[i] = straighten(one->traced, domain, one->straight, one->map, straightening);
       if (statuses[i].ok())
         statuses[i] = one->surface.build(one->straight.net, domain, one->map);
       if (statuses[i].ok())
@@ -225,6 +242,7 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
   remeshOptions.level = options.level;
   remeshOptions.sampleRelaxationIterations = options.sampleRelaxationIterations;
   remeshOptions.computeDistance = false;
+  remeshOptions.holeTriangles = holes.empty() ? std::vector<char>() : holes.holeTriangle;
   CollectionRemesh collection;
   if (Status s = remesh(domain, remeshModels, collection, remeshOptions); !s.ok())
     return Status::error("the remesh without the missing features: " + s.message());
@@ -259,6 +277,12 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     for (int v : landmarks[m])
       if (v != kMissingLandmark)
         taken[v] = 1;
+    // An inner feature never goes on the boundary, whose landmarks are L0's.
+    std::vector<std::vector<int>> loops;
+    if (boundaryLoops(surface, loops).ok())
+      for (const std::vector<int>& loop : loops)
+        for (int v : loop)
+          taken[v] = 1;
     for (int f = 0; f < featureCount; ++f)
     {
       if (!dropped[f])
@@ -368,6 +392,22 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
   for (int f : out.missingFeatures)
     if (sourcesOf[f] == 0)
       return Status::error("feature " + std::to_string(f) + " is missing on every model: nothing to place it from");
+  // A boundary landmark marks where a surface was cut open: no map carries
+  // it (the contract of surfaces with boundaries).
+  for (int m = 0; m < modelCount; ++m)
+  {
+    std::vector<std::vector<int>> loops;
+    if (Status s = boundaryLoops(*surfaces[m], loops); !s.ok())
+      return Status::error("model " + std::to_string(m) + ": " + s.message());
+    std::vector<char> onBoundary(surfaces[m]->vertexCount(), 0);
+    for (const std::vector<int>& loop : loops)
+      for (int v : loop)
+        onBoundary[v] = 1;
+    for (int f : out.missingFeatures)
+      if (landmarks[m][f] != kMissingLandmark && onBoundary[landmarks[m][f]])
+        return Status::error("feature " + std::to_string(f) + " lies on model " + std::to_string(m) +
+          "'s boundary: a boundary landmark cannot be placed, only a feature inside the surfaces");
+  }
   int source = options.baseDomainModel;
   if (source >= modelCount)
     return Status::error("the base domain's model " + std::to_string(source) + " is not in the collection");

@@ -107,11 +107,19 @@ struct MissingLandmarkReport
 /// `report->modelErrors` says why. Nothing to place (no feature missing) is
 /// a success that does nothing.
 ///
-/// \pre Every surface is closed, genus 0 and manifold (`checkSurface()`).
+/// Surfaces with boundaries (beyond the paper) are placed the same way:
+/// the reduced base domain is then open, every model closed against it
+/// (`closeBaseDomain()`, `closeSurface()`, the stages' options that keep
+/// the caps) and the remesh open; a feature is never placed on a boundary
+/// vertex, and a feature that lies on a model's boundary cannot be placed.
+///
+/// \pre Every surface is closed, genus 0 and manifold (`checkSurface()`),
+///      or a sphere with holes (`checkSurfaceWithBoundaries()`).
 /// Fails (Status), naming the problem, on options out of range (a level
 /// outside 1 to `kMaximumRemeshLevel`, negative relaxation rounds or
 /// similarity width), lists of different lengths or
 /// invalid (`validateLandmarks()` with missing features allowed), a
+/// missing feature that lies on some model's boundary, a
 /// feature missing on every model, fewer than 4 features left, no model
 /// with every feature (or a `baseDomainModel` that misses some), a reduced
 /// base domain that cannot be built, no model that has a missing feature
