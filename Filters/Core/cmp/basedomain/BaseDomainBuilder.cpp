@@ -607,6 +607,101 @@ Status removeCaps(const BaseDomain& closed, const LandmarkedCaps& capped, const 
   return {};
 }
 
+/// The corner angle at `c` of triangle (a, b, c), from the base vertices'
+/// positions.
+double angleAt(const BaseDomain& domain, int a, int b, int c)
+{
+  const Vec3 u = domain.mesh.points[a] - domain.mesh.points[c], w = domain.mesh.points[b] - domain.mesh.points[c];
+  return std::atan2(u.cross(w).norm(), u.dot(w));
+}
+
+/// Flips the inner edges of an open L0 whose two opposite corners sum to
+/// more than a half turn (Delaunay's criterion on the landmarks'
+/// positions) while the two triangles, flipped, still face the way they
+/// did (the quadrilateral is not folded), no vertex is left on fewer than
+/// two triangles, and the new edge is not one already or a chord between
+/// two boundary landmarks. Why: a boundary landmark only collapses along
+/// its loop, so the decimation leaves one boundary landmark of a crowded
+/// loop joined to most of the landmarks round it (a belly cut open round
+/// a landmark of 12 neighbours: one of its 12 boundary landmarks joined to
+/// 9 of them), and every other model's curves then wind round the hole to
+/// reach them. Returns the flips made.
+int flipToDelaunay(BaseDomain& domain)
+{
+  std::vector<Triangle>& triangles = domain.mesh.triangles;
+  const int vertices = domain.mesh.vertexCount();
+  std::vector<char> onBoundary(vertices, 0);
+  std::vector<std::vector<int>> loops;
+  if (!boundaryLoops(domain.mesh, loops).ok())
+    return 0;
+  for (const auto& loop : loops)
+    for (int v : loop)
+      onBoundary[v] = 1;
+  const auto normal = [&](int a, int b, int c) {
+    const Vec3 &p = domain.mesh.points[a], &q = domain.mesh.points[b], &r = domain.mesh.points[c];
+    return Vec3((q - p).cross(r - p));
+  };
+  int flips = 0;
+  const int most = 10 * static_cast<int>(triangles.size());
+  for (bool changed = true; changed && flips < most;)
+  {
+    changed = false;
+    std::map<std::pair<int, int>, int> triangleOf; // directed edge -> its triangle
+    std::vector<int> trianglesAt(vertices, 0);
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+      for (int k = 0; k < 3; ++k)
+      {
+        triangleOf[{ triangles[t][k], triangles[t][(k + 1) % 3] }] = t;
+        ++trianglesAt[triangles[t][k]];
+      }
+    // The edge that most breaks the criterion goes first.
+    double worst = kPi + 1e-9;
+    int best = -1, bestOther = -1, a = -1, b = -1, c = -1, d = -1;
+    for (const auto& [edge, t] : triangleOf)
+    {
+      const auto [u, w] = edge;
+      if (u > w)
+        continue;
+      const auto across = triangleOf.find({ w, u });
+      if (across == triangleOf.end())
+        continue; // a boundary edge
+      const int o = across->second;
+      const auto third = [&](int tri) {
+        for (int v : triangles[tri])
+          if (v != u && v != w)
+            return v;
+        return -1;
+      };
+      const int x = third(t), y = third(o);
+      if (x == y || triangleOf.count({ x, y }) || triangleOf.count({ y, x }) || (onBoundary[x] && onBoundary[y]))
+        continue;
+      if (trianglesAt[u] < 3 || trianglesAt[w] < 3)
+        continue;
+      const double opposite = angleAt(domain, u, w, x) + angleAt(domain, w, u, y);
+      if (!(opposite > worst))
+        continue;
+      // (u, w, x) and (w, u, y) become (u, y, x) and (w, x, y).
+      const Vec3 before = normal(u, w, x).normalized() + normal(w, u, y).normalized();
+      if (!(normal(u, y, x).dot(before) > 0.0 && normal(w, x, y).dot(before) > 0.0))
+        continue;
+      worst = opposite;
+      best = t;
+      bestOther = o;
+      a = u;
+      b = w;
+      c = x;
+      d = y;
+    }
+    if (best < 0)
+      break;
+    triangles[best] = { { a, d, c } };
+    triangles[bestOther] = { { b, c, d } };
+    ++flips;
+    changed = true;
+  }
+  return flips;
+}
+
 } // namespace
 
 Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmarks, BaseDomain& domain,
@@ -666,6 +761,7 @@ Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmark
       return Status::error("internal error: the decimated base domain (its holes capped) is invalid: " + s.message());
     if (Status s = removeCaps(decimated, capped, featureOfVertex, featureCount, domain); !s.ok())
       return s;
+    out.flips += flipToDelaunay(domain);
   }
   measureQuality(domain, out);
   if (options.progress)

@@ -28,7 +28,7 @@ struct BaseDomainBuilderReport
 {
   int collapses = 0;             ///< Half-edge collapses performed.
   int foldingCollapses = 0;      ///< Collapses that had to fold a triangle over.
-  int flips = 0;                 ///< Edge flips used to unblock a vertex.
+  int flips = 0;                 ///< Edge flips used to unblock a vertex, and those that make an open L0 Delaunay.
   double minAngleDegrees = 0.0;  ///< Smallest angle of the base triangles.
   double meanShapeQuality = 0.0; ///< Mean of 4*sqrt(3)*area/sum(edge^2), 1 = equilateral.
 };
@@ -55,7 +55,13 @@ struct BaseDomainBuilderReport
 /// triangulated sphere with as many holes as the surface, whose boundary
 /// loops are exactly the landmarks on the surface's loops, in the same
 /// cyclic order (both with the surface on the left), and whose triangles
-/// are oriented like the surface's. `closeBaseDomain()` (layout) closes it
+/// are oriented like the surface's. Its inner edges are then flipped
+/// towards Delaunay's criterion on the landmarks' positions (never a
+/// boundary edge, never into a chord between two boundary landmarks or
+/// across a folded quadrilateral; counted in the report's `flips`):
+/// boundary landmarks only collapse along their loop, so a crowded loop
+/// leaves one of them joined to most of the landmarks round it, and every
+/// other model's curves then wind round the hole to reach them. `closeBaseDomain()` (layout) closes it
 /// again for the later stages. The report's angles and shapes are those of
 /// `domain`'s own triangles.
 ///
