@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <queue>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -607,6 +608,165 @@ Status removeCaps(const BaseDomain& closed, const LandmarkedCaps& capped, const 
   return {};
 }
 
+/// Re-triangulates the band of an open L0 round each boundary loop (the
+/// triangles with a corner on the loop) as the shortest strip between the
+/// loop and the ring of landmarks round it: each boundary landmark is
+/// joined to the landmarks of the ring nearest to it in the order of both
+/// (Fuchs, Kedem and Uselton's optimal strip between two contours, by
+/// dynamic programming over the joining edges' summed lengths). Why: a
+/// boundary landmark only collapses along its loop, so the decimation can
+/// leave one boundary landmark of a crowded loop joined to most of the
+/// ring and its neighbours on the loop to one landmark each, and every
+/// other model's curves then wind round the hole to reach them. A band
+/// that is not such a strip (a chord between boundary landmarks, a ring
+/// that touches itself or the loop) is left as it is. Returns the bands
+/// made anew.
+int restripBoundaryBands(BaseDomain& domain)
+{
+  std::vector<std::vector<int>> loops;
+  if (!boundaryLoops(domain.mesh, loops).ok())
+    return 0;
+  std::vector<Triangle>& triangles = domain.mesh.triangles;
+  const auto distance = [&](int a, int b) { return (domain.mesh.points[a] - domain.mesh.points[b]).norm(); };
+  int made = 0;
+  for (const std::vector<int>& loop : loops)
+  {
+    const int m = static_cast<int>(loop.size());
+    std::map<int, int> place; // loop vertex -> its index on the loop
+    for (int i = 0; i < m; ++i)
+      place[loop[i]] = i;
+    // The band, and its edges on the ring: a ring edge (y, y') runs along
+    // its band triangle with the band on the left, and its other side is
+    // outside the band.
+    std::vector<int> band;
+    std::set<std::pair<int, int>> directed;
+    bool strip = true;
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    {
+      const Triangle& tri = triangles[t];
+      int onLoop = 0;
+      for (int v : tri)
+        onLoop += place.count(v) ? 1 : 0;
+      if (onLoop == 0)
+        continue;
+      band.push_back(t);
+      if (onLoop == 3)
+        strip = false;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = tri[k], b = tri[(k + 1) % 3];
+        directed.insert({ a, b });
+        // Two loop corners must be a loop edge, run the loop's way.
+        if (onLoop == 2 && place.count(a) && place.count(b) && loop[(place[a] + 1) % m] != b)
+          strip = false;
+      }
+    }
+    std::map<int, int> ringNext; // ring vertex -> the next one, the band on the left
+    for (const auto& [a, b] : directed)
+      if (!place.count(a) && !place.count(b) && !directed.count({ b, a }))
+        strip = strip && ringNext.emplace(a, b).second;
+    const int n = static_cast<int>(ringNext.size());
+    if (!strip || n < 1 || static_cast<int>(band.size()) != m + n)
+      continue;
+    // The ring in order, walked against its direction so that it runs the
+    // loop's way round the hole: z[k + 1] -> z[k] is a ring edge.
+    std::vector<int> z{ ringNext.begin()->first };
+    std::map<int, int> ringPrevious;
+    for (const auto& [a, b] : ringNext)
+      ringPrevious[b] = a;
+    if (static_cast<int>(ringPrevious.size()) != n)
+      continue;
+    while (static_cast<int>(z.size()) < n)
+    {
+      const auto found = ringPrevious.find(z.back());
+      if (found == ringPrevious.end() || found->second == z.front())
+        break;
+      z.push_back(found->second);
+    }
+    if (static_cast<int>(z.size()) != n || ringPrevious.at(z.back()) != z.front())
+      continue; // the ring is not one cycle
+    // The shortest strip, from each possible first edge (loop[0], z[k0]).
+    const double infinity = std::numeric_limits<double>::infinity();
+    double bestCost = infinity;
+    std::vector<Triangle> bestStrip;
+    for (int k0 = 0; k0 < n; ++k0)
+    {
+      const auto ring = [&](int k) { return z[(k0 + k) % n]; };
+      // cost[i][k]: the joining edges so far, the strip at edge (loop[i % m], ring(k)).
+      std::vector<std::vector<double>> cost(m + 1, std::vector<double>(n + 1, infinity));
+      std::vector<std::vector<char>> fromLoop(m + 1, std::vector<char>(n + 1, 0));
+      cost[0][0] = distance(loop[0], ring(0));
+      for (int i = 0; i <= m; ++i)
+        for (int k = 0; k <= n; ++k)
+        {
+          if (i < m && cost[i][k] + distance(loop[(i + 1) % m], ring(k)) < cost[i + 1][k])
+          {
+            cost[i + 1][k] = cost[i][k] + distance(loop[(i + 1) % m], ring(k));
+            fromLoop[i + 1][k] = 1;
+          }
+          if (k < n && cost[i][k] + distance(loop[i % m], ring(k + 1)) < cost[i][k + 1])
+          {
+            cost[i][k + 1] = cost[i][k] + distance(loop[i % m], ring(k + 1));
+            fromLoop[i][k + 1] = 0;
+          }
+        }
+      if (!(cost[m][n] < bestCost))
+        continue;
+      bestCost = cost[m][n];
+      bestStrip.clear();
+      for (int i = m, k = n; i > 0 || k > 0;)
+      {
+        if (fromLoop[i][k])
+        {
+          bestStrip.push_back({ { loop[i - 1], loop[i % m], ring(k) } });
+          --i;
+        }
+        else
+        {
+          bestStrip.push_back({ { loop[i % m], ring(k), ring(k - 1) } });
+          --k;
+        }
+      }
+    }
+    // The new joining edges must not be edges already (outside the band).
+    std::set<std::pair<int, int>> outside;
+    std::vector<char> inBand(triangles.size(), 0);
+    for (int t : band)
+      inBand[t] = 1;
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+      if (!inBand[t])
+        for (int k = 0; k < 3; ++k)
+          outside.insert(std::minmax(triangles[t][k], triangles[t][(k + 1) % 3]));
+    bool fits = static_cast<int>(bestStrip.size()) == m + n;
+    for (const Triangle& tri : bestStrip)
+      for (int k = 0; k < 3 && fits; ++k)
+      {
+        const int a = tri[k], b = tri[(k + 1) % 3];
+        fits = !(place.count(a) != place.count(b) && outside.count(std::minmax(a, b)));
+      }
+    if (!fits)
+      continue;
+    const std::vector<Triangle> before = triangles;
+    for (std::size_t i = 0; i < band.size(); ++i)
+      triangles[band[i]] = bestStrip[i];
+    // Oriented as before: each directed edge once, each edge of two
+    // triangles run both ways.
+    std::set<std::pair<int, int>> runs;
+    bool oriented = true;
+    for (const Triangle& tri : triangles)
+      for (int k = 0; k < 3; ++k)
+        oriented = oriented && runs.insert({ tri[k], tri[(k + 1) % 3] }).second;
+    std::vector<std::vector<int>> after;
+    if (!oriented || !boundaryLoops(domain.mesh, after).ok() || after.size() != loops.size())
+    {
+      triangles = before;
+      continue;
+    }
+    ++made;
+  }
+  return made;
+}
+
 /// The corner angle at `c` of triangle (a, b, c), from the base vertices'
 /// positions.
 double angleAt(const BaseDomain& domain, int a, int b, int c)
@@ -761,6 +921,9 @@ Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmark
       return Status::error("internal error: the decimated base domain (its holes capped) is invalid: " + s.message());
     if (Status s = removeCaps(decimated, capped, featureOfVertex, featureCount, domain); !s.ok())
       return s;
+    // The band round each hole made anew where it is a strip, then every
+    // inner edge towards Delaunay's criterion.
+    restripBoundaryBands(domain);
     out.flips += flipToDelaunay(domain);
   }
   measureQuality(domain, out);

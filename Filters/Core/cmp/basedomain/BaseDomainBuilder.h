@@ -55,13 +55,17 @@ struct BaseDomainBuilderReport
 /// triangulated sphere with as many holes as the surface, whose boundary
 /// loops are exactly the landmarks on the surface's loops, in the same
 /// cyclic order (both with the surface on the left), and whose triangles
-/// are oriented like the surface's. Its inner edges are then flipped
-/// towards Delaunay's criterion on the landmarks' positions (never a
-/// boundary edge, never into a chord between two boundary landmarks or
-/// across a folded quadrilateral; counted in the report's `flips`):
-/// boundary landmarks only collapse along their loop, so a crowded loop
-/// leaves one of them joined to most of the landmarks round it, and every
-/// other model's curves then wind round the hole to reach them. `closeBaseDomain()` (layout) closes it
+/// are oriented like the surface's. Boundary landmarks only collapse along
+/// their loop, so a crowded loop can leave one of them joined to most of
+/// the landmarks round it, and every other model's curves then wind round
+/// the hole to reach them. So the band of triangles round each hole is
+/// made anew where it is a strip between the loop and one ring of
+/// landmarks (the shortest strip: Fuchs, Kedem and Uselton's optimal
+/// triangulation between two contours, on the landmarks' positions), and
+/// then every inner edge is flipped towards Delaunay's criterion on those
+/// positions (never a boundary edge, never into a chord between two
+/// boundary landmarks or across a folded quadrilateral; counted in the
+/// report's `flips`). `closeBaseDomain()` (layout) closes it
 /// again for the later stages. The report's angles and shapes are those of
 /// `domain`'s own triangles.
 ///
