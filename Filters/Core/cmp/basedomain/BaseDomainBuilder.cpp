@@ -666,7 +666,7 @@ int restripBoundaryBands(BaseDomain& domain)
       if (!place.count(a) && !place.count(b) && !directed.count({ b, a }))
         strip = strip && ringNext.emplace(a, b).second;
     const int n = static_cast<int>(ringNext.size());
-    if (!strip || n < 1 || static_cast<int>(band.size()) != m + n)
+    if (!strip || n < 3 || static_cast<int>(band.size()) != m + n)
       continue;
     // The ring in order, walked against its direction so that it runs the
     // loop's way round the hole: z[k + 1] -> z[k] is a ring edge.
@@ -683,7 +683,8 @@ int restripBoundaryBands(BaseDomain& domain)
         break;
       z.push_back(found->second);
     }
-    if (static_cast<int>(z.size()) != n || ringPrevious.at(z.back()) != z.front())
+    const auto closing = ringPrevious.find(z.back());
+    if (static_cast<int>(z.size()) != n || closing == ringPrevious.end() || closing->second != z.front())
       continue; // the ring is not one cycle
     // The shortest strip, from each possible first edge (loop[0], z[k0]).
     const double infinity = std::numeric_limits<double>::infinity();
