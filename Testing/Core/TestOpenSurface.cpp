@@ -138,9 +138,17 @@ TEST(OpenSurface, BoundaryLoopsRunWithTheSurfaceOnTheLeft)
   EXPECT_EQ(loops[0].front(), *std::min_element(loops[0].begin(), loops[0].end()));
   for (std::size_t i = 0; i < loops[0].size(); ++i)
     EXPECT_TRUE(hasDirectedEdge(square, loops[0][i], loops[0][(i + 1) % loops[0].size()])) << i;
+  // boundaryVertices() marks exactly the loop's vertices.
+  std::vector<char> onBoundary;
+  ASSERT_TRUE(boundaryVertices(square, onBoundary).ok());
+  ASSERT_EQ(static_cast<int>(onBoundary.size()), square.vertexCount());
+  for (int v = 0; v < square.vertexCount(); ++v)
+    EXPECT_EQ(onBoundary[v] != 0, std::count(loops[0].begin(), loops[0].end(), v) == 1) << v;
 
   ASSERT_TRUE(boundaryLoops(test::sphere(1), loops).ok());
   EXPECT_TRUE(loops.empty());
+  ASSERT_TRUE(boundaryVertices(test::sphere(1), onBoundary).ok());
+  EXPECT_EQ(std::count(onBoundary.begin(), onBoundary.end(), 1), 0);
 
   // Two triangles that share one vertex only: a pinched boundary.
   TriangleMesh bowtie;

@@ -791,13 +791,9 @@ int flipToDelaunay(BaseDomain& domain)
 {
   std::vector<Triangle>& triangles = domain.mesh.triangles;
   const int vertices = domain.mesh.vertexCount();
-  std::vector<char> onBoundary(vertices, 0);
-  std::vector<std::vector<int>> loops;
-  if (!boundaryLoops(domain.mesh, loops).ok())
+  std::vector<char> onBoundary;
+  if (!boundaryVertices(domain.mesh, onBoundary).ok())
     return 0;
-  for (const auto& loop : loops)
-    for (int v : loop)
-      onBoundary[v] = 1;
   const auto normal = [&](int a, int b, int c) {
     const Vec3 &p = domain.mesh.points[a], &q = domain.mesh.points[b], &r = domain.mesh.points[c];
     return Vec3((q - p).cross(r - p));

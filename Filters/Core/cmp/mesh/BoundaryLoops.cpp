@@ -71,6 +71,18 @@ Status boundaryLoops(const TriangleMesh& mesh, std::vector<std::vector<int>>& lo
   return {};
 }
 
+Status boundaryVertices(const TriangleMesh& mesh, std::vector<char>& onBoundary)
+{
+  onBoundary.assign(mesh.vertexCount(), 0);
+  std::vector<std::vector<int>> loops;
+  if (Status s = boundaryLoops(mesh, loops); !s.ok())
+    return s;
+  for (const std::vector<int>& loop : loops)
+    for (int v : loop)
+      onBoundary[v] = 1;
+  return {};
+}
+
 Status capLoop(TriangleMesh& mesh, const std::vector<int>& loop, int& centre)
 {
   const int count = static_cast<int>(loop.size());

@@ -21,6 +21,10 @@ namespace cmp
 /// disagree in orientation).
 Status boundaryLoops(const TriangleMesh& mesh, std::vector<std::vector<int>>& loops);
 
+/// \brief Per vertex of `mesh`, 1 if it lies on one of its boundary loops
+///        (`boundaryLoops()`), else 0. Fails as `boundaryLoops()` does.
+Status boundaryVertices(const TriangleMesh& mesh, std::vector<char>& onBoundary);
+
 /// \brief Closes `loop` (a boundary loop of `mesh`, `boundaryLoops()`'s) by
 ///        a fan of triangles from a new vertex, its index returned: the
 ///        vertex lies off the loop's centroid, on the side away from the

@@ -114,9 +114,9 @@ int nearestFreeVertex(const TriangleMesh& mesh, int near, const Vec3& p, const s
 /// (`setOf[m] == set`): every model that has the other features is mapped
 /// over a base domain built from `source` without `dropped`, the
 /// collection remeshed, and each dropped feature carried from the models
-/// that have it.
+/// that have it, never onto a vertex of `onBoundary` (per model).
 Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::vector<LandmarkList>& landmarks,
-  const std::vector<char>& dropped, const std::vector<int>& setOf, int set, int source,
+  const std::vector<std::vector<char>>& onBoundary, const std::vector<char>& dropped, const std::vector<int>& setOf, int set, int source,
   const MissingLandmarkOptions& options, MissingLandmarkReport& out, const std::function<void(double)>& progress)
 {
   const int modelCount = static_cast<int>(surfaces.size());
@@ -273,16 +273,11 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     const TriangleMesh& surface = *surfaces[m];
     const ClosestPointQuery onSurface(surface);
     const double scale = std::sqrt(std::max(surfaceArea(surface), 1e-300));
-    std::vector<char> taken(surface.vertexCount(), 0);
+    // An inner feature never goes on the boundary, whose landmarks are L0's.
+    std::vector<char> taken = onBoundary[m];
     for (int v : landmarks[m])
       if (v != kMissingLandmark)
         taken[v] = 1;
-    // An inner feature never goes on the boundary, whose landmarks are L0's.
-    std::vector<std::vector<int>> loops;
-    if (boundaryLoops(surface, loops).ok())
-      for (const std::vector<int>& loop : loops)
-        for (int v : loop)
-          taken[v] = 1;
     for (int f = 0; f < featureCount; ++f)
     {
       if (!dropped[f])
@@ -394,17 +389,13 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
       return Status::error("feature " + std::to_string(f) + " is missing on every model: nothing to place it from");
   // A boundary landmark marks where a surface was cut open: no map carries
   // it (the contract of surfaces with boundaries).
+  std::vector<std::vector<char>> onBoundary(modelCount);
   for (int m = 0; m < modelCount; ++m)
   {
-    std::vector<std::vector<int>> loops;
-    if (Status s = boundaryLoops(*surfaces[m], loops); !s.ok())
+    if (Status s = boundaryVertices(*surfaces[m], onBoundary[m]); !s.ok())
       return Status::error("model " + std::to_string(m) + ": " + s.message());
-    std::vector<char> onBoundary(surfaces[m]->vertexCount(), 0);
-    for (const std::vector<int>& loop : loops)
-      for (int v : loop)
-        onBoundary[v] = 1;
     for (int f : out.missingFeatures)
-      if (landmarks[m][f] != kMissingLandmark && onBoundary[landmarks[m][f]])
+      if (landmarks[m][f] != kMissingLandmark && onBoundary[m][landmarks[m][f]])
         return Status::error("feature " + std::to_string(f) + " lies on model " + std::to_string(m) +
           "'s boundary: a boundary landmark cannot be placed, only a feature inside the surfaces");
   }
@@ -456,7 +447,7 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
     const std::vector<char>& dropped = missingSets[set];
     const double done = static_cast<double>(set) / missingSets.size();
     const double share = 1.0 / missingSets.size();
-    if (Status s = placeOneSet(surfaces, given, dropped, setOf, static_cast<int>(set), source, options, out,
+    if (Status s = placeOneSet(surfaces, given, onBoundary, dropped, setOf, static_cast<int>(set), source, options, out,
           [&](double fraction) { progress(done + share * fraction); });
         !s.ok())
       return s;
