@@ -278,13 +278,23 @@ const char* stateName(StageState state)
   return "not-run";
 }
 
+/// The seconds of `stage` on `result`, or a negative number if it did not
+/// run successfully.
+double stageSeconds(const ModelResult& result, const std::string& stage)
+{
+  for (const StageResult& s : result.stages)
+    if (s.stage == stage && s.state == StageState::Done)
+      return s.seconds;
+  return -1.0;
+}
+
 /// \brief The pipeline's speed against the issue's yardstick: per model its
 ///        total, the yardstick and their ratio, and the median ratio.
 std::string yardstickSection(const std::vector<ModelResult>& results)
 {
-  std::string table = tableHeader({ "model", "total", "yardstick", "ratio" }, 1);
+  std::string table = tableHeader({ "model", "total", "yardstick", "ratio", "trace", "trace ratio" }, 1);
   int count = 0;
-  double median = 0.0;
+  double median = 0.0, traceMedian = -1.0;
   for (const ModelResult& result : results)
   {
     const Figure* ratio = findFigure(result, "pipeline_per_yardstick");
@@ -294,30 +304,44 @@ std::string yardstickSection(const std::vector<ModelResult>& results)
       continue;
     ++count;
     median = middle->value;
+    const Figure* traceRatio = findFigure(result, "trace_per_yardstick");
+    if (const Figure* traceMiddle = findFigure(result, "trace_per_yardstick_median"))
+      traceMedian = traceMiddle->value;
     table += tableRow({ result.model, format("%.3f", result.totalSeconds()), format("%.4f", yardstick->value),
-      format("%.1f", ratio->value) });
+      format("%.1f", ratio->value), traceRatio ? format("%.3f", stageSeconds(result, "trace")) : "-",
+      traceRatio ? format("%.1f", traceRatio->value) : "-" });
   }
   if (count == 0)
     return "";
   return "\n## Speed against the yardstick\n\n"
          "`total` = the pipeline's stages counted in the time table's total (`map` included); `yardstick` = one "
          "Eigen SimplicialLDLT factorization of the model's cotan Laplacian plus 21 solves (issue 24); ratio = "
-         "total / yardstick, target: median <= 25.\n\n" +
-    table + "\nmedian ratio over " + std::to_string(count) + " models: " + format("%.1f", median) + "\n";
+         "total / yardstick, target: median <= 25; trace ratio = the `trace` stage / yardstick, target: median "
+         "<= 3 (issue 28).\n\n" +
+    table + "\nmedian ratio over " + std::to_string(count) + " models: " + format("%.1f", median) +
+    (traceMedian >= 0.0 ? "; median trace ratio: " + format("%.1f", traceMedian) : std::string()) + "\n";
 }
 
 } // namespace
 
-void addYardstickRatios(std::vector<ModelResult>& results)
+namespace
+{
+
+/// Sets figure `name` to seconds / yardstick on every model where `seconds`
+/// gives a time, and `name`_median to the median of those ratios on each of
+/// them (so that the CSV, one row per model and stage, carries it too).
+void addRatio(std::vector<ModelResult>& results, const std::string& name,
+  const std::function<double(const ModelResult&)>& seconds)
 {
   std::vector<double> ratios;
   for (ModelResult& result : results)
   {
     const Figure* yardstick = findFigure(result, "yardstick_seconds");
-    if (result.ok() && yardstick && yardstick->value > 0.0)
+    const double t = result.ok() ? seconds(result) : -1.0;
+    if (t >= 0.0 && yardstick && yardstick->value > 0.0)
     {
-      ratios.push_back(result.totalSeconds() / yardstick->value);
-      setFigure(result.figures, "pipeline_per_yardstick", ratios.back());
+      ratios.push_back(t / yardstick->value);
+      setFigure(result.figures, name, ratios.back());
     }
   }
   if (ratios.empty())
@@ -325,11 +349,17 @@ void addYardstickRatios(std::vector<ModelResult>& results)
   std::sort(ratios.begin(), ratios.end());
   const std::size_t half = ratios.size() / 2;
   const double median = ratios.size() % 2 ? ratios[half] : 0.5 * (ratios[half - 1] + ratios[half]);
-  // On every model with a ratio, so that the CSV, one row per model and
-  // stage, carries it too.
   for (ModelResult& result : results)
-    if (findFigure(result, "pipeline_per_yardstick"))
-      setFigure(result.figures, "pipeline_per_yardstick_median", median);
+    if (findFigure(result, name))
+      setFigure(result.figures, name + "_median", median);
+}
+
+} // namespace
+
+void addYardstickRatios(std::vector<ModelResult>& results)
+{
+  addRatio(results, "pipeline_per_yardstick", [](const ModelResult& r) { return r.totalSeconds(); });
+  addRatio(results, "trace_per_yardstick", [](const ModelResult& r) { return stageSeconds(r, "trace"); });
 }
 
 std::string markdownReport(const std::vector<ModelResult>& results, const RunInfo& info)

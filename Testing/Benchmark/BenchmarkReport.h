@@ -37,7 +37,9 @@ std::string markdownReport(const std::vector<ModelResult>& results, const RunInf
 /// \brief Sets each model's figure `pipeline_per_yardstick`: its pipeline
 ///        total (`ModelResult::totalSeconds()`) over its `yardstick_seconds`
 ///        (issue 24's speed reference), for a model that has both, and on
-///        each of those `pipeline_per_yardstick_median`, the median ratio.
+///        each of those `pipeline_per_yardstick_median`, the median ratio;
+///        the same for the `trace` stage alone (`trace_per_yardstick` and
+///        `trace_per_yardstick_median`, issue 28).
 void addYardstickRatios(std::vector<ModelResult>& results);
 
 /// \brief One CSV row per model and stage:

@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <numeric>
+#include <random>
 
 using namespace cmp;
 using cmp::test::octahedron;
@@ -187,4 +191,32 @@ TEST(SurfaceCheck, RealModelsPass)
   ASSERT_TRUE(readOBJ(test::sharedDataDir() + "/spot/spot.obj", spot).ok());
   weldIdenticalPoints(spot);
   EXPECT_TRUE(checkSurface(spot.mesh).ok()) << checkSurface(spot.mesh).message;
+}
+
+TEST(SurfaceCheck, HalfedgesByEdgeSortsAsAFullSortDoes)
+{
+  // A torus with its vertices shuffled, and a triangle hung on one of its
+  // edges (three halfedges on one edge), against a plain sort by
+  // (smaller vertex, larger vertex, halfedge).
+  TriangleMesh mesh = test::torus(7, 5);
+  std::vector<int> relabel(mesh.vertexCount());
+  std::iota(relabel.begin(), relabel.end(), 0);
+  std::shuffle(relabel.begin(), relabel.end(), std::mt19937(3));
+  for (Triangle& tri : mesh.triangles)
+    for (int& v : tri)
+      v = relabel[v];
+  mesh.points.push_back(Vec3(9, 9, 9));
+  mesh.triangles.push_back({ mesh.triangles[4][0], mesh.triangles[4][1], mesh.vertexCount() - 1 });
+
+  std::vector<std::array<int, 3>> expected;
+  for (int h = 0; h < 3 * mesh.triangleCount(); ++h)
+  {
+    const int a = mesh.triangles[h / 3][h % 3], b = mesh.triangles[h / 3][(h % 3 + 1) % 3];
+    expected.push_back({ std::min(a, b), std::max(a, b), h });
+  }
+  std::sort(expected.begin(), expected.end());
+  const std::vector<int> order = halfedgesByEdge(mesh);
+  ASSERT_EQ(order.size(), expected.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    EXPECT_EQ(order[i], expected[i][2]) << "position " << i;
 }

@@ -23,7 +23,7 @@ Status computeFeatureCoordinates(const TriangleMesh& mesh, const LandmarkList& l
   const Eigen::MatrixXd unitVectors = Eigen::MatrixXd::Identity(featureCount, featureCount);
   const Status s = n > options.directSolveLimit
     ? solveConvexCombinationMultilevel(meanValueWeights(mesh), fixedRow, unitVectors, values, options.multilevel)
-    : solveMeanValueSystem(mesh, fixedRow, unitVectors, values);
+    : solveMeanValueSystem(mesh, fixedRow, unitVectors, values, ConvexCombinationFactorization::DiagonalPivots);
   if (!s.ok())
     return Status::error("harmonic parameterization: " + s.message());
   out.featureCount = featureCount;

@@ -51,7 +51,7 @@ struct FeatureCoordinateOptions
 ///
 /// The weights are a convex combination, so every component lies in [0, 1]
 /// and each row sums to 1. One sparse LU factorization serves all F
-/// right-hand sides. Surfaces above `options.directSolveLimit` vertices get
+/// right-hand sides (`ConvexCombinationFactorization::DiagonalPivots`). Surfaces above `options.directSolveLimit` vertices get
 /// the multigrid approximation instead: rows still sum to 1, and components
 /// may stray outside [0, 1] by the approximation's small error.
 ///

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <queue>
@@ -55,7 +56,10 @@ public:
     ++stamp_;
     for (int g : gates)
       gate_[g] = stamp_;
-    Heap heap;
+    // A binary heap as std::priority_queue keeps one, in storage kept
+    // across runs.
+    std::vector<Entry>& heap = heap_;
+    heap.clear();
     const auto relax = [&](int x, int from, double d)
     {
       if (closed_[x] == stamp_ || (seen_[x] == stamp_ && dist_[x] <= d))
@@ -63,7 +67,8 @@ public:
       seen_[x] = stamp_;
       dist_[x] = d;
       parent_[x] = from;
-      heap.push({ d + remaining(x), x });
+      heap.push_back({ d + remaining(x), x });
+      std::push_heap(heap.begin(), heap.end(), std::greater<Entry>());
     };
     for (int h : starts)
     {
@@ -74,8 +79,9 @@ public:
     int reached = -1;
     while (!heap.empty())
     {
-      const int x = heap.top().second;
-      heap.pop();
+      std::pop_heap(heap.begin(), heap.end(), std::greater<Entry>());
+      const int x = heap.back().second;
+      heap.pop_back();
       if (closed_[x] == stamp_)
         continue; // a stale entry: x was settled through a cheaper one
       closed_[x] = stamp_;
@@ -110,7 +116,6 @@ public:
 
 private:
   using Entry = std::pair<double, int>;
-  using Heap = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
 
   void resize(int n)
   {
@@ -127,6 +132,7 @@ private:
   std::vector<double> dist_;
   std::vector<int> parent_;
   std::vector<unsigned> seen_, gate_, closed_;
+  std::vector<Entry> heap_;
   unsigned stamp_ = 0;
 };
 

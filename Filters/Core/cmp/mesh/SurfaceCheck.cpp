@@ -111,16 +111,13 @@ SurfaceCheckResult checkEdges(const TriangleMesh& mesh)
   };
   std::vector<Key> keys;
   keys.reserve(3 * mesh.triangles.size());
-  for (const Triangle& tri : mesh.triangles)
+  for (int h : halfedgesByEdge(mesh))
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      const auto a = static_cast<std::uint64_t>(tri[k]);
-      const auto b = static_cast<std::uint64_t>(tri[(k + 1) % 3]);
-      keys.push_back({ (std::min(a, b) << 32) | std::max(a, b), tri[k] });
-    }
+    const Triangle& tri = mesh.triangles[h / 3];
+    const auto a = static_cast<std::uint64_t>(tri[h % 3]);
+    const auto b = static_cast<std::uint64_t>(tri[(h % 3 + 1) % 3]);
+    keys.push_back({ (std::min(a, b) << 32) | std::max(a, b), tri[h % 3] });
   }
-  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) { return x.edge < y.edge; });
 
   int boundary = 0, nonManifold = 0, misoriented = 0;
   std::string boundaryExample, nonManifoldExample, misorientedExample;

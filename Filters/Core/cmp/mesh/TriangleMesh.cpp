@@ -46,37 +46,49 @@ double surfaceArea(const TriangleMesh& mesh)
   return area;
 }
 
+std::vector<int> halfedgesByEdge(const TriangleMesh& mesh)
+{
+  const int halfedges = 3 * mesh.triangleCount();
+  std::vector<int> smaller(halfedges), larger(halfedges);
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      smaller[3 * t + k] = std::min(a, b);
+      larger[3 * t + k] = std::max(a, b);
+    }
+  std::vector<int> start(mesh.vertexCount() + 1, 0);
+  for (int h = 0; h < halfedges; ++h)
+    ++start[smaller[h] + 1];
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    start[v + 1] += start[v];
+  std::vector<int> order(halfedges);
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (int h = 0; h < halfedges; ++h)
+    order[next[smaller[h]]++] = h;
+  const auto before = [&](int g, int h) { return larger[g] < larger[h] || (larger[g] == larger[h] && g < h); };
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    std::sort(order.begin() + start[v], order.begin() + start[v + 1], before);
+  return order;
+}
+
 bool CornerTable::build(const TriangleMesh& mesh)
 {
   triangles_ = &mesh.triangles;
   const int halfedges = 3 * mesh.triangleCount();
-  // Sort halfedges by their undirected edge so the two sides of every edge
-  // end up next to each other.
-  struct Key
-  {
-    std::uint64_t edge;
-    int halfedge;
-  };
-  std::vector<Key> keys(halfedges);
-  for (int h = 0; h < halfedges; ++h)
-  {
-    const auto a = static_cast<std::uint64_t>(from(h));
-    const auto b = static_cast<std::uint64_t>(to(h));
-    keys[h] = { (std::min(a, b) << 32) | std::max(a, b), h };
-  }
-  std::sort(keys.begin(), keys.end(),
-    [](const Key& x, const Key& y) { return x.edge < y.edge || (x.edge == y.edge && x.halfedge < y.halfedge); });
+  const std::vector<int> order = halfedgesByEdge(mesh);
+  const auto edge = [&](int h) { return std::make_pair(std::min(from(h), to(h)), std::max(from(h), to(h))); };
 
   opposite_.assign(halfedges, -1);
   for (int i = 0; i < halfedges; i += 2)
   {
-    if (i + 1 >= halfedges || keys[i].edge != keys[i + 1].edge ||
-      (i + 2 < halfedges && keys[i + 2].edge == keys[i].edge))
+    if (i + 1 >= halfedges || edge(order[i]) != edge(order[i + 1]) ||
+      (i + 2 < halfedges && edge(order[i + 2]) == edge(order[i])))
     {
       return false;
     }
-    const int h = keys[i].halfedge;
-    const int g = keys[i + 1].halfedge;
+    const int h = order[i];
+    const int g = order[i + 1];
     if (from(h) != to(g))
     {
       return false;

@@ -60,13 +60,24 @@ double triangleArea(const TriangleMesh& mesh, int t);
 /// \brief Total surface area.
 double surfaceArea(const TriangleMesh& mesh);
 
+/// \brief The halfedges `h = 3 t + k` (from `triangles[t][k]` to
+///        `triangles[t][(k+1)%3]`) ordered by their undirected edge (its
+///        smaller vertex, then its larger one), then by h, so that the sides
+///        of each edge are next to each other.
+///
+/// A counting sort by the smaller vertex, then each vertex's halfedges sorted
+/// by the larger one: linear time on meshes of bounded valence.
+/// \pre Every triangle indexes vertices of `mesh`.
+std::vector<int> halfedgesByEdge(const TriangleMesh& mesh);
+
 /// \brief Corner-table topology of a closed, edge-manifold, oriented mesh.
 ///
 /// Halfedge `h = 3 t + k` runs from `triangles[t][k]` to
 /// `triangles[t][(k+1)%3]`. `opposite(h)` is the halfedge of the neighbouring
-/// triangle running the other way. Construction is O(n log n) and needs no
-/// hash map. Only valid for meshes that passed the edge checks of
-/// `checkSurface()`; `build()` reports failure otherwise.
+/// triangle running the other way. Construction sorts the halfedges by edge
+/// (`halfedgesByEdge()`) and needs no hash map. Only valid for meshes that
+/// passed the edge checks of `checkSurface()`; `build()` reports failure
+/// otherwise.
 class CornerTable
 {
 public:

@@ -36,8 +36,10 @@ Eigen::SparseMatrix<double> meanValueWeights(const TriangleMesh& mesh)
   return weights;
 }
 
-Status ConvexCombinationSolver::factorize(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow)
+Status ConvexCombinationSolver::factorize(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
+  ConvexCombinationFactorization factorization)
 {
+  factorization_ = factorization;
   const int n = static_cast<int>(weights.rows());
   fixedRow_ = fixedRow;
   unknown_.assign(n, -1);
@@ -68,8 +70,10 @@ Status ConvexCombinationSolver::factorize(const Eigen::SparseMatrix<double>& wei
     return {};
   Eigen::SparseMatrix<double> system(unknowns_, unknowns_);
   system.setFromTriplets(entries.begin(), entries.end());
-  lu_.compute(system);
-  if (lu_.info() != Eigen::Success)
+  const bool factorized = factorization == ConvexCombinationFactorization::DiagonalPivots
+    ? diagonalLu_.compute(system)
+    : (lu_.compute(system), lu_.info() == Eigen::Success);
+  if (!factorized)
     return Status::error("the mean value system could not be factorized (degenerate geometry?)");
   return {};
 }
@@ -89,8 +93,18 @@ Status ConvexCombinationSolver::solve(
           b.row(unknown_[v]) = rhs->row(v);
     for (const Coupling& c : couplings_)
       b.row(c.unknown) += c.weight * fixedValues.row(c.fixedRow);
-    solution = lu_.solve(b);
-    if (lu_.info() != Eigen::Success || !solution.allFinite())
+    bool solved = true;
+    if (factorization_ == ConvexCombinationFactorization::DiagonalPivots)
+    {
+      diagonalLu_.solveInPlace(b);
+      solution = std::move(b);
+    }
+    else
+    {
+      solution = lu_.solve(b);
+      solved = lu_.info() == Eigen::Success;
+    }
+    if (!solved || !solution.allFinite())
       return Status::error("the mean value system could not be solved");
   }
   values.resize(n, d);
@@ -103,18 +117,18 @@ Status ConvexCombinationSolver::solve(
 }
 
 Status solveConvexCombinationSystem(const Eigen::SparseMatrix<double>& weights, const std::vector<int>& fixedRow,
-  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values, ConvexCombinationFactorization factorization)
 {
   ConvexCombinationSolver solver;
-  if (Status s = solver.factorize(weights, fixedRow); !s.ok())
+  if (Status s = solver.factorize(weights, fixedRow, factorization); !s.ok())
     return s;
   return solver.solve(fixedValues, nullptr, values);
 }
 
 Status solveMeanValueSystem(const TriangleMesh& mesh, const std::vector<int>& fixedRow,
-  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values)
+  const Eigen::MatrixXd& fixedValues, Eigen::MatrixXd& values, ConvexCombinationFactorization factorization)
 {
-  return solveConvexCombinationSystem(meanValueWeights(mesh), fixedRow, fixedValues, values);
+  return solveConvexCombinationSystem(meanValueWeights(mesh), fixedRow, fixedValues, values, factorization);
 }
 
 } // namespace cmp

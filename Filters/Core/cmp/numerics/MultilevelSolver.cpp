@@ -278,7 +278,8 @@ Status solveConvexCombinationMultilevel(const Eigen::SparseMatrix<double>& weigh
     for (const Level& level : levels)
       report->unknownsPerLevel.push_back(level.unknowns);
   }
-  if (Status s = hierarchy.coarsest.factorize(Eigen::SparseMatrix<double>(levels.back().weights), levels.back().fixedRow);
+  if (Status s = hierarchy.coarsest.factorize(Eigen::SparseMatrix<double>(levels.back().weights), levels.back().fixedRow,
+        ConvexCombinationFactorization::DiagonalPivots);
       !s.ok())
     return s;
   hierarchy.zeroFixedValues = Eigen::MatrixXd::Zero(fixedValues.rows(), fixedValues.cols());
