@@ -35,8 +35,7 @@ bool SymmetricPatternLU::compute(const Eigen::SparseMatrix<double>& matrix)
   newIndex_.clear();
   start_.assign(1, 0);
   lowerRows_.clear();
-  lower_.clear();
-  upper_.clear();
+  entries_.clear();
   pivot_.clear();
   if (n == 0)
     return true;
@@ -113,8 +112,7 @@ bool SymmetricPatternLU::compute(const Eigen::SparseMatrix<double>& matrix)
   for (int j = 0; j < n; ++j)
     start_[j + 1] = start_[j] + count[j];
   lowerRows_.resize(start_[n]);
-  lower_.resize(start_[n]);
-  upper_.resize(start_[n]);
+  entries_.resize(start_[n]);
   pivot_.assign(n, 0.0);
 
   // Numeric, row by row of L and column by column of U: with the leading
@@ -122,7 +120,8 @@ bool SymmetricPatternLU::compute(const Eigen::SparseMatrix<double>& matrix)
   // (D11^-1 y), U11^T z = C(k, 0:k-1)^T gives L's row (z^T D11^-1), and the
   // pivot is C(k, k) - z^T D11^-1 y. Both solves run over row k's pattern
   // in topological order.
-  std::vector<double> columnWork(n, 0.0), rowWork(n, 0.0);
+  // y (column k of U, scaled) and z (row k of L, scaled) side by side.
+  std::vector<Entry> work(n, Entry{ 0.0, 0.0 });
   std::vector<int> pattern(n), path(n), filled(n, 0);
   std::fill(flag.begin(), flag.end(), -1);
   for (int k = 0; k < n; ++k)
@@ -141,32 +140,31 @@ bool SymmetricPatternLU::compute(const Eigen::SparseMatrix<double>& matrix)
     };
     for (int p = above.start[k]; p < above.start[k + 1]; ++p)
     {
-      columnWork[above.index[p]] += above.value[p];
+      work[above.index[p]].upper += above.value[p];
       reach(above.index[p]);
     }
     for (int p = left.start[k]; p < left.start[k + 1]; ++p)
     {
-      rowWork[left.index[p]] += left.value[p];
+      work[left.index[p]].lower += left.value[p];
       reach(left.index[p]);
     }
     double pivot = diagonal[k];
     for (int t = top; t < n; ++t)
     {
       const int j = pattern[t];
-      const double y = columnWork[j], z = rowWork[j];
-      columnWork[j] = 0.0;
-      rowWork[j] = 0.0;
+      const double y = work[j].upper, z = work[j].lower;
+      work[j] = Entry{ 0.0, 0.0 };
       const int end = start_[j] + filled[j];
       for (int p = start_[j]; p < end; ++p)
       {
-        columnWork[lowerRows_[p]] -= lower_[p] * y;
-        rowWork[lowerRows_[p]] -= upper_[p] * z;
+        Entry& w = work[lowerRows_[p]];
+        w.upper -= entries_[p].lower * y;
+        w.lower -= entries_[p].upper * z;
       }
       const double l = z / pivot_[j];
       pivot -= l * y;
       lowerRows_[end] = k;
-      lower_[end] = l;
-      upper_[end] = y / pivot_[j];
+      entries_[end] = Entry{ l, y / pivot_[j] };
       ++filled[j];
     }
     if (pivot == 0.0 || !std::isfinite(pivot))
@@ -189,7 +187,7 @@ void SymmetricPatternLU::solveInPlace(Eigen::MatrixXd& rhs) const
     for (int p = start_[j]; p < start_[j + 1]; ++p)
     {
       double* xi = data + static_cast<std::ptrdiff_t>(lowerRows_[p]) * d;
-      const double l = lower_[p];
+      const double l = entries_[p].lower;
       for (int c = 0; c < d; ++c)
         xi[c] -= l * xj[c];
     }
@@ -202,7 +200,7 @@ void SymmetricPatternLU::solveInPlace(Eigen::MatrixXd& rhs) const
     for (int p = start_[j]; p < start_[j + 1]; ++p)
     {
       const double* xi = data + static_cast<std::ptrdiff_t>(lowerRows_[p]) * d;
-      const double u = upper_[p];
+      const double u = entries_[p].upper;
       for (int c = 0; c < d; ++c)
         xj[c] -= u * xi[c];
     }

@@ -46,10 +46,16 @@ private:
   int n_ = 0;
   std::vector<int> newIndex_; ///< Position in P A P^T of each row of A.
   std::vector<int> start_;    ///< Column j of L (row j of U) is [start_[j], start_[j + 1]).
-  std::vector<int> lowerRows_; ///< Row of each entry of L: the column of the entry of U beside it.
-  std::vector<double> lower_; ///< L(i, j) in column j.
-  std::vector<double> upper_; ///< U(j, i) in row j, at the same position.
-  std::vector<double> pivot_; ///< D.
+  /// \brief L(i, j) and U(j, i), side by side: the factorization and the
+  ///        solves read both at once.
+  struct Entry
+  {
+    double lower;
+    double upper;
+  };
+  std::vector<int> lowerRows_; ///< Row i of each entry of L (column j): the column of U's entry beside it.
+  std::vector<Entry> entries_; ///< At the same positions.
+  std::vector<double> pivot_;  ///< D.
 };
 
 } // namespace cmp
