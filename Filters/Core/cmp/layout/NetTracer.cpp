@@ -3,6 +3,8 @@
 #include <cmp/layout/FeatureParameterization.h>
 #include <cmp/mesh/SurfaceCheck.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -44,10 +46,11 @@ public:
   /// `target`, which it may enter only from a vertex marked as a gate; or,
   /// with `target < 0`, at the first gate vertex it reaches. Fills `path`
   /// (source first) and returns its cost, or infinity if nothing was reached.
-  /// `remaining(x)` is a lower bound of the cost from x to the target that
-  /// never drops by more than an edge's cost along the edge (A*; it must be
-  /// 0 when `target < 0`): the path found is a cheapest one all the same, but
-  /// the fire stays near the line to the target instead of flooding a disc.
+  /// `remaining(x)` is a lower bound of the cost from x to the target (with
+  /// `target < 0`, to the nearest gate; 0 on the gates) that never drops by
+  /// more than an edge's cost along the edge (A*): the path found is a
+  /// cheapest one all the same, but the fire stays near the line to the
+  /// target instead of flooding a disc.
   template <class Cost, class Remaining>
   double run(const EditableMesh& mesh, const std::vector<char>& blocked, int source, const std::vector<int>& starts,
     int target, const std::vector<int>& gates, Cost cost, Remaining remaining, std::vector<int>& path)
@@ -488,10 +491,17 @@ private:
       return Side::Unknown;
     const std::vector<int> interior(path.begin() + 1, path.end() - 1);
     const auto length = [&](int x, int y) { return (net_.mesh.point(x) - net_.mesh.point(y)).norm(); };
+    // The straight distance to the interior's bounding box bounds the
+    // distance to its nearest vertex, and changes by at most an edge's
+    // length along an edge.
+    Eigen::AlignedBox<double, 3> box;
+    for (int v : interior)
+      box.extend(net_.mesh.point(v));
+    const auto toBox = [&](int x) { return std::sqrt(box.squaredExteriorDistance(net_.mesh.point(x))); };
     std::vector<int> reach;
     ++report_.traces;
     if (fire_.run(net_.mesh, occupied_, net_.landmarkVertex[bv], sector(bv, before, after), -1, interior, length,
-          [](int) { return 0.0; }, reach) == kInfinity)
+          toBox, reach) == kInfinity)
       return Side::Unknown;
     const int hit = reach.back();
     const int from = reach[reach.size() - 2];
