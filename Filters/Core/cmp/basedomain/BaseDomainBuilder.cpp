@@ -920,7 +920,7 @@ Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmark
       return s;
     // The band round each hole made anew where it is a strip, then every
     // inner edge towards Delaunay's criterion.
-    restripBoundaryBands(domain);
+    out.restripedBands = restripBoundaryBands(domain);
     out.flips += flipToDelaunay(domain);
   }
   measureQuality(domain, out);

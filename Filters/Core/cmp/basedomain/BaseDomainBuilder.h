@@ -29,6 +29,7 @@ struct BaseDomainBuilderReport
   int collapses = 0;             ///< Half-edge collapses performed.
   int foldingCollapses = 0;      ///< Collapses that had to fold a triangle over.
   int flips = 0;                 ///< Edge flips used to unblock a vertex, and those that make an open L0 Delaunay.
+  int restripedBands = 0;        ///< Bands round the holes of an open L0 made anew as the shortest strip.
   double minAngleDegrees = 0.0;  ///< Smallest angle of the base triangles.
   double meanShapeQuality = 0.0; ///< Mean of 4*sqrt(3)*area/sum(edge^2), 1 = equilateral.
 };
