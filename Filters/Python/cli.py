@@ -78,7 +78,7 @@ from .stages import (
     trace_net,
 )
 from .summary import print_summary
-from .vtkio import StageError, keep_timing_arrays, write_polydata
+from .vtkio import StageError, keep_timing_arrays, read_polydata, write_polydata
 
 
 EXIT_NO_BASE_DOMAIN = 3
@@ -138,63 +138,94 @@ def main(argv=None):
             straighten_net(model, domain, traced, args.output, args.lower_stretch, args.free_curves,
                            args.free_curves_max_triangles)
             print("%s straightened in %.2f s" % (step, model.report["seconds"]["straighten"]), flush=True)
-        return (model, "process", process, ["parameterized", "curves"])
+        # Over several ranks, rank 0 reads the straightened surfaces back
+        # from the files that the children wrote, on whichever rank.
+        return (model, "process", process, ["parameterized", "curves"] if ranks.size == 1 else [])
 
     # The models read, in order; each rank takes the next one not yet taken
     # whenever it has a free slot.
     read = sorted(index for part in ranks.all_gather([index for index, model in mine if model.surface is not None])
                   for index in part)
+    # The report of each model processed here and, on rank 0, on any rank.
     processed = {}
+
+    def taken(index, model_report):
+        """Rank 0: model `index` processed on some rank, with its report. Over
+        several ranks its straightened surfaces are read now, while the
+        other models run, so that all are ready when the last one is."""
+        processed[index] = model_report
+        if ranks.size > 1 and "error" not in model_report:
+            try:
+                _read_straightened(models[index], args.output)
+            except StageError as error:
+                model_report.update(status="failed", error="cannot read its straightened net back: %s" % error)
+
+    def finished(position, error):
+        index = read[position]
+        model = models[index]
+        if error is not None:
+            model.fail(error)
+            print("[%d/%d] %s: FAILED: %s" % (index + 1, len(models), model.name, model.report["error"]), flush=True)
+        if ranks.rank == 0:
+            taken(index, model.report)
+        else:
+            processed[index] = model.report
+            ranks.post((index, model.report))
+
+    def poll():
+        ranks.progress()
+        for entry in ranks.posts():
+            taken(*entry)
+
     if domain is None:
         for index, model in mine:
             if model.surface is not None:
                 model.fail("no base domain: " + report["base_domain"]["error"])
     else:
         counter = ranks.counter()
-        errors = run_model_stages([processing(index, models[index]) for index in read], jobs, args.model_timeout,
-                                  counter.claim, ranks.progress if ranks.size > 1 else None)
+        run_model_stages([processing(index, models[index]) for index in read], jobs, args.model_timeout,
+                         counter.claim, poll if ranks.size > 1 else None, finished)
+        while ranks.rank == 0 and len(processed) < len(read):
+            for entry in ranks.posts(wait=True):
+                taken(*entry)
         counter.free()
-        for position, error in errors.items():
-            index = read[position]
-            processed[index] = models[index]
-            if error is not None:
-                models[index].fail(error)
-                print("[%d/%d] %s: FAILED: %s" % (index + 1, len(models), models[index].name,
-                                                  models[index].report["error"]), flush=True)
 
     if ranks.size > 1:
-        # Every rank's models to rank 0, which does the rest; the others end
-        # with its exit status. A model straightened on another rank than
-        # the one that read it keeps the reader's figures and times too
-        # (the base domain's).
-        sent = [(index, "read", model.report, None, None) for index, model in mine if index not in processed]
-        sent += [(index, "processed", model.report, polydata_to_text(model.parameterized),
-                  polydata_to_text(model.curves)) for index, model in sorted(processed.items())]
-        parts = ranks.gather(sent)
+        # The figures of the models read here but processed elsewhere (or
+        # not at all) to rank 0, which does the rest; the others end with
+        # its exit status. A model straightened on another rank than the
+        # one that read it keeps the reader's figures and times too (the
+        # base domain's).
+        parts = ranks.gather([(index, model.report) for index, model in mine if index not in processed])
         if ranks.rank != 0:
             return ranks.end(None)
         ranks.use_every_core()
-        entries = [entry for part in parts for entry in part]
-        for index, kind, model_report, parameterized, curves in sorted(entries, key=lambda e: e[1] == "processed"):
+        for index, model_report in (entry for part in parts for entry in part):
+            models[index].report = model_report
+        for index, model_report in sorted(processed.items()):
+            # Over what its reader found: a model whose processing crashed
+            # on another rank than the reader's still has its read figures,
+            # in the order one process would have written them.
             model = models[index]
-            if kind == "processed":
-                # Over what its reader found (the reader's entry came
-                # first): a model whose processing crashed on another rank
-                # than the reader's still has its read figures, in the order
-                # one process would have written them.
-                merged = dict(model.report)
-                merged.update(model_report)
-                merged["seconds"] = dict(model.report.get("seconds", {}), **model_report.get("seconds", {}))
-                model_report = merged
-            model.report = model_report
-            model.parameterized = polydata_from_text(parameterized)
-            model.curves = polydata_from_text(curves)
+            merged = dict(model.report)
+            merged.update(model_report)
+            merged["seconds"] = dict(model.report.get("seconds", {}), **model_report.get("seconds", {}))
+            model.report = merged
     status = 1
     try:
         status = _collection_stages(args, models, domain, report, started, clock)
     finally:
         ranks.end(status)
     return status
+
+
+def _read_straightened(model, folder):
+    """Sets the straightened surface and curves of `model` from the files
+    its processing wrote (NAME.param.vtp and NAME.straight-curves.vtp): the
+    surfaces it had, but for the timing field arrays that no file or figure
+    takes from them. Raises StageError if they cannot be read."""
+    model.parameterized, model.curves = [read_polydata(os.path.join(folder, model.name + suffix))
+                                         for suffix in (".param.vtp", ".straight-curves.vtp")]
 
 
 def _prepare(args, report):

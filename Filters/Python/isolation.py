@@ -182,14 +182,15 @@ class _Child:
 POLL_SECONDS = 0.05
 
 
-def run_children(tasks, jobs=1, claim=None, poll=None):
+def run_children(tasks, jobs=1, claim=None, poll=None, done=None):
     """Runs each task (stage, name, function, doing, timeout) as
     run_in_child does, up to `jobs` children at once, and returns one
     outcome per task, in the tasks' order: the function's result, or the
     StageError that run_in_child would raise (an exception object, not
     raised). Each task's function runs in a child forked when the task
     starts, so it sees what the parent had then; the outcomes do not depend
-    on `jobs`.
+    on `jobs`. `done(index, outcome)`, if given, is called as soon as a
+    task's outcome is known, while the other children run on.
 
     With `claim`, the tasks are shared with other processes: claim() gives
     the index of the next task to run here (an index past the last: none
@@ -213,12 +214,14 @@ def run_children(tasks, jobs=1, claim=None, poll=None):
         if poll is not None:
             wait = POLL_SECONDS if wait is None else min(wait, POLL_SECONDS)
         ready, _, _ = select.select(list(running), [], [], wait)
-        for child in ready:
-            if child.read_some():
-                outcomes[running.pop(child)] = child.outcome()
+        ended = [(running.pop(child), child.outcome) for child in ready if child.read_some()]
         now = time.monotonic()
-        for child in [c for c in running if c.deadline is not None and c.deadline <= now]:
-            outcomes[running.pop(child)] = child.kill()
+        ended += [(running.pop(child), child.kill) for child in list(running)
+                  if child.deadline is not None and child.deadline <= now]
+        for index, outcome in ended:
+            outcomes[index] = outcome()
+            if done is not None:
+                done(index, outcomes[index])
         if poll is not None:
             poll()
 
@@ -241,18 +244,19 @@ def run_in_child(stage, name, function, doing, timeout=0):
 MODEL_STAGES = {"read": "reading and checking its files", "process": "tracing and straightening its net"}
 
 
-def run_model_stages(stages, jobs=1, timeout=0, claim=None, poll=None):
+def run_model_stages(stages, jobs=1, timeout=0, claim=None, poll=None, finished=None):
     """Runs one stage of each of several models, each in a child process,
     up to `jobs` at once: `stages` holds (model, stage, function, surfaces),
     with `model` a stages.Model, `stage` a key of MODEL_STAGES, `function()`
     the stage's work and `surfaces` the Model attributes it sets
     ("surface", "parameterized", "curves"); `timeout` as for run_in_child,
-    `claim` and `poll` as for run_children. Afterwards the report and those
-    attributes of each model whose stage ran here are what its child left
-    them. Returns {index in `stages`: None, or the StageError (not raised)
-    if the stage failed, its child crashed or timed out} for the stages run
-    here; the model's report then keeps the figures the child had written
-    before a StageError."""
+    `claim` and `poll` as for run_children. As soon as a model's child
+    ends, its report and those attributes are what the child left them,
+    and `finished(index in stages, error)` is called, if given. Returns
+    {index in `stages`: None, or the StageError (not raised) if the stage
+    failed, its child crashed or timed out} for the stages run here; the
+    model's report then keeps the figures the child had written before a
+    StageError."""
     def task(model, stage, function, surfaces):
         def child():
             try:
@@ -262,20 +266,23 @@ def run_model_stages(stages, jobs=1, timeout=0, claim=None, poll=None):
             return model.report, [polydata_to_text(getattr(model, attribute)) for attribute in surfaces]
         return (stage, model.name, child, MODEL_STAGES[stage], timeout)
 
-    outcomes = run_children([task(*entry) for entry in stages], jobs, claim, poll)
     errors = {}
-    for index, ((model, _, _, surfaces), outcome) in enumerate(zip(stages, outcomes)):
-        if outcome is NOT_RUN:
-            continue
+
+    def take(index, outcome):
+        model, _, _, surfaces = stages[index]
         if isinstance(outcome, StageError):
             if getattr(outcome, "extra", None) is not None:
                 model.report = outcome.extra
             errors[index] = outcome
-            continue
-        model.report, texts = outcome
-        for attribute, text in zip(surfaces, texts):
-            setattr(model, attribute, polydata_from_text(text))
-        errors[index] = None
+        else:
+            model.report, texts = outcome
+            for attribute, text in zip(surfaces, texts):
+                setattr(model, attribute, polydata_from_text(text))
+            errors[index] = None
+        if finished is not None:
+            finished(index, errors[index])
+
+    run_children([task(*entry) for entry in stages], jobs, claim, poll, take)
     return errors
 
 

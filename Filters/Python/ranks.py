@@ -3,11 +3,14 @@ ARGS` shares the models out over the N ranks. Model i is read by rank
 i mod N; rank 0 reads the base domain, or the rank that read
 --base-domain-from's model builds it. Then each rank traces and
 straightens the next model not yet taken whenever it has a free slot (a
-counter all ranks share), reading it again if another rank read it. Once
-every rank has sent its models back, rank 0 remeshes the collection and
-writes every collection file, the pictures and the report, the same files
-as one process writes. Within a rank, its models run in child processes as
-without MPI (a model that fails or crashes fails alone, on any rank).
+counter all ranks share), reading it again if another rank read it. As
+each model is straightened, its rank posts its figures to rank 0, which
+reads its straightened surfaces back from the files written into the
+output folder while the other models run. Once every model is done, rank 0
+remeshes the collection and writes every collection file, the pictures and
+the report, the same files as one process writes. Within a rank, its
+models run in child processes as without MPI (a model that fails or
+crashes fails alone, on any rank).
 
 The ranks must see the same files (one machine, or a shared file system).
 mpi4py (Debian's python3-mpi4py) carries the messages; it is imported only
@@ -88,6 +91,7 @@ class MPIRanks(SingleProcess):
         self.rank = communicator.Get_rank()
         self.size = communicator.Get_size()
         self.local_size = _environment_count(_LOCAL_SIZE_VARIABLES) or 1
+        self.posted = []  # the requests of the values posted
 
     def broadcast(self, value, root=0):
         return self.communicator.bcast(value, root=root)
@@ -96,12 +100,33 @@ class MPIRanks(SingleProcess):
         # Point to point, each rank waiting without spinning: a rank done
         # early leaves its core to the models still running.
         if self.rank != 0:
-            _wait(self.communicator.isend(value, dest=0, tag=_GATHER_TAG))
+            for request in self.posted + [self.communicator.isend(value, dest=0, tag=_GATHER_TAG)]:
+                _wait(request)
+            self.posted = []
             return None
         values = [value] + [None] * (self.size - 1)
         for rank in range(1, self.size):
             values[rank] = _receive(self.communicator, rank, _GATHER_TAG)
         return values
+
+    def post(self, value):
+        """A rank other than 0: sends `value` to rank 0 without waiting for
+        it to be received (rank 0's posts() has it; gather() waits until it
+        has been)."""
+        self.posted.append(self.communicator.isend(value, dest=0, tag=_POST_TAG))
+
+    def posts(self, wait=False):
+        """Rank 0: the values the other ranks have posted that arrived since
+        the last call, in the order each rank posted them; with `wait`, at
+        least one (waiting without spinning)."""
+        values = []
+        while True:
+            for rank in range(1, self.size):
+                while self.communicator.Iprobe(source=rank, tag=_POST_TAG):
+                    values.append(self.communicator.recv(source=rank, tag=_POST_TAG))
+            if values or not wait:
+                return values
+            time.sleep(_WAIT_SECONDS)
 
     def end(self, status):
         """Rank 0: sends the run's exit status to the other ranks. The
@@ -163,6 +188,7 @@ class _SharedCounter:
 
 _GATHER_TAG = 2801
 _END_TAG = 2802
+_POST_TAG = 2803
 _WAIT_SECONDS = 0.02
 
 
@@ -194,10 +220,14 @@ def _environment_count(names):
 def this_job():
     """MPIRanks when an MPI launcher started this process as one of several
     ranks, else SingleProcess. The ranks fork their models' child processes
-    (which never call MPI), so Open MPI's warning about fork is turned off."""
+    (which never call MPI), so Open MPI's warning about fork is turned off.
+    They send each other only a few small messages (the surfaces go through
+    the output folder), so Open MPI carries them with its ob1 layer unless
+    told otherwise: choosing UCX's transports took 0.2 s at every start."""
     if (_environment_count(_SIZE_VARIABLES) or 1) <= 1:
         return SingleProcess()
     os.environ.setdefault("OMPI_MCA_mpi_warn_on_fork", "0")
+    os.environ.setdefault("OMPI_MCA_pml", "ob1")
     try:
         from mpi4py import MPI
     except ImportError as error:
