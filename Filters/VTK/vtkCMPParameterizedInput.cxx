@@ -121,15 +121,15 @@ ParameterizedInput::ParameterizedInput(const BaseDomain& domain, vtkPolyData* in
 Status ParameterizedInput::closeInput(const LandmarkList& landmarks, TriangleMesh& closed,
   LandmarkList& closedLandmarks, std::vector<int>& closedPatchIds)
 {
-  SurfaceHoles surfaceHoles;
-  if (Status s = closeSurface(mesh_, landmarks, *holes_, closed, closedLandmarks, surfaceHoles); !s.ok())
-    return s;
   SurfaceCheckOptions topologyOnly;
   topologyOnly.checkGeometry = false;
-  if (const SurfaceCheckResult check = checkSurface(closed, topologyOnly); !check.ok())
-    return Status::error(check.message + " (the surface with its boundary loops capped)");
+  bridge::ClosedSurface surface;
+  if (Status s = bridge::toClosedSurface(mesh_, landmarks, *holes_, surface, topologyOnly); !s.ok())
+    return s;
+  closed = std::move(surface.closed);
+  closedLandmarks = std::move(surface.closedLandmarks);
   closedPatchIds = patchIds_;
-  const std::vector<int> caps = capPatchIds(surfaceHoles, *holes_);
+  const std::vector<int> caps = capPatchIds(surface.holes, *holes_);
   closedPatchIds.insert(closedPatchIds.end(), caps.begin(), caps.end());
   // Each cap's centre is its hole's base vertex: corner 2 of the hole's
   // first triangle (closeBaseDomain() draws them (b, a, centre)).

@@ -165,7 +165,7 @@ Status toClosedBaseDomain(vtkPolyData* input, BaseDomain& domain, BaseDomainHole
 }
 
 Status toClosedSurface(TriangleMesh checked, const LandmarkList& landmarks, const BaseDomainHoles& holes,
-  ClosedSurface& out)
+  ClosedSurface& out, const SurfaceCheckOptions& capped)
 {
   out = ClosedSurface{};
   out.open = std::move(checked);
@@ -173,7 +173,7 @@ Status toClosedSurface(TriangleMesh checked, const LandmarkList& landmarks, cons
     return s;
   if (holes.empty())
     return {}; // closed as given, and checked
-  const SurfaceCheckResult check = checkSurface(out.closed);
+  const SurfaceCheckResult check = checkSurface(out.closed, capped);
   if (!check.ok())
     return Status::error(check.message + " (the surface with its boundary loops capped)");
   return {};

@@ -9,6 +9,7 @@
 #include <cmp/layout/OpenSurface.h>
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/mesh/Status.h>
+#include <cmp/mesh/SurfaceCheck.h>
 #include <cmp/mesh/TriangleMesh.h>
 
 #include "vtkCMPArrayNames.h"
@@ -83,10 +84,12 @@ struct ClosedSurface
 ///        `toCheckedSurfaceWithBoundaries()` (`checked`, taken over) against
 ///        `holes` (L0's): checks the contract of surfaces with boundaries
 ///        and the capped surface, so that a filter reads and checks its
-///        input once. Fails (Status) on what `closeSurface()` or
+///        input once. `capped`: how the capped surface is checked (a
+///        remesher's input, parameterized already, is checked for its
+///        topology only). Fails (Status) on what `closeSurface()` or
 ///        `checkSurface()` refuse, in the user's terms.
 Status toClosedSurface(TriangleMesh checked, const LandmarkList& landmarks, const BaseDomainHoles& holes,
-  ClosedSurface& out);
+  ClosedSurface& out, const SurfaceCheckOptions& capped = {});
 
 /// \brief Builds a polydata of points and triangles.
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);

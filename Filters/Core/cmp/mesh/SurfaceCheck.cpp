@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numeric>
 #include <sstream>
 
@@ -100,37 +99,29 @@ SurfaceCheckResult checkUnusedVertices(const TriangleMesh& mesh)
   return {};
 }
 
-/// Groups the halfedges by undirected edge and reports open, non-manifold and
-/// inconsistently oriented edges, each with a count and an example.
-SurfaceCheckResult checkEdges(const TriangleMesh& mesh)
+/// Groups the halfedges by undirected edge (`order`, as `halfedgesByEdge()`
+/// gives it) and reports open, non-manifold and inconsistently oriented
+/// edges, each with a count and an example.
+SurfaceCheckResult checkEdges(const TriangleMesh& mesh, const std::vector<int>& order)
 {
-  struct Key
-  {
-    std::uint64_t edge;
-    int from;
+  const auto from = [&](int h) { return mesh.triangles[h / 3][h % 3]; };
+  const auto to = [&](int h) { return mesh.triangles[h / 3][(h % 3 + 1) % 3]; };
+  const auto sameEdge = [&](int g, int h) {
+    return std::min(from(g), to(g)) == std::min(from(h), to(h)) &&
+      std::max(from(g), to(g)) == std::max(from(h), to(h));
   };
-  std::vector<Key> keys;
-  keys.reserve(3 * mesh.triangles.size());
-  for (int h : halfedgesByEdge(mesh))
-  {
-    const Triangle& tri = mesh.triangles[h / 3];
-    const auto a = static_cast<std::uint64_t>(tri[h % 3]);
-    const auto b = static_cast<std::uint64_t>(tri[(h % 3 + 1) % 3]);
-    keys.push_back({ (std::min(a, b) << 32) | std::max(a, b), tri[h % 3] });
-  }
-
   int boundary = 0, nonManifold = 0, misoriented = 0;
   std::string boundaryExample, nonManifoldExample, misorientedExample;
   int nonManifoldCount = 0;
-  for (std::size_t i = 0; i < keys.size();)
+  for (std::size_t i = 0; i < order.size();)
   {
     std::size_t j = i;
-    while (j < keys.size() && keys[j].edge == keys[i].edge)
+    while (j < order.size() && sameEdge(order[j], order[i]))
     {
       ++j;
     }
-    const int a = static_cast<int>(keys[i].edge >> 32);
-    const int b = static_cast<int>(keys[i].edge & 0xffffffffu);
+    const int a = std::min(from(order[i]), to(order[i]));
+    const int b = std::max(from(order[i]), to(order[i]));
     const std::size_t count = j - i;
     if (count == 1)
     {
@@ -145,7 +136,7 @@ SurfaceCheckResult checkEdges(const TriangleMesh& mesh)
         nonManifoldCount = static_cast<int>(count);
       }
     }
-    else if (keys[i].from == keys[i + 1].from)
+    else if (from(order[i]) == from(order[i + 1]))
     {
       if (misoriented++ == 0)
         misorientedExample = edgeName(a, b);
@@ -281,12 +272,14 @@ SurfaceCheckResult checkSurface(const TriangleMesh& mesh, const SurfaceCheckOpti
     result = checkGeometry(mesh, options.degenerateAreaFraction);
   if (result.ok())
     result = checkUnusedVertices(mesh);
-  if (result.ok())
-    result = checkEdges(mesh);
+  if (!result.ok())
+    return result;
+  const std::vector<int> order = halfedgesByEdge(mesh);
+  result = checkEdges(mesh, order);
   if (!result.ok())
     return result;
   CornerTable table;
-  table.build(mesh); // cannot fail once checkEdges passed
+  table.build(mesh, order); // cannot fail once checkEdges passed
   result = checkVertexFans(mesh, table);
   if (result.ok())
   {

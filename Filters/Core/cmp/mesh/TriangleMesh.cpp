@@ -74,9 +74,15 @@ std::vector<int> halfedgesByEdge(const TriangleMesh& mesh)
 
 bool CornerTable::build(const TriangleMesh& mesh)
 {
+  return build(mesh, halfedgesByEdge(mesh));
+}
+
+bool CornerTable::build(const TriangleMesh& mesh, const std::vector<int>& order)
+{
   triangles_ = &mesh.triangles;
   const int halfedges = 3 * mesh.triangleCount();
-  const std::vector<int> order = halfedgesByEdge(mesh);
+  if (static_cast<int>(order.size()) != halfedges)
+    return false;
   const auto edge = [&](int h) { return std::make_pair(std::min(from(h), to(h)), std::max(from(h), to(h))); };
 
   opposite_.assign(halfedges, -1);

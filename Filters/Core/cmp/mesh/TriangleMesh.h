@@ -84,6 +84,11 @@ public:
   /// \brief Builds the table; returns false if some edge does not have exactly
   ///        two oppositely oriented halfedges.
   bool build(const TriangleMesh& mesh);
+  /// \brief The same with the halfedges already ordered by edge (`order`,
+  ///        `halfedgesByEdge(mesh)`), so that a caller that needed the order
+  ///        too sorts once; false as above, or when `order` does not have one
+  ///        entry per halfedge. \pre `order` is `halfedgesByEdge(mesh)`.
+  bool build(const TriangleMesh& mesh, const std::vector<int>& order);
 
   /// \brief Halfedge running the other way across the same edge.
   int opposite(int h) const { return opposite_[h]; }

@@ -182,7 +182,7 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     return Status::error("the base domain without the missing features: " + s.message());
   StraightenOptions straightening = options.straighten;
   straightening.net.keptFeatures = holes.keptFeatures();
-  straightening.map.fixedPatches = holes.empty() ? std::vector<char>() : holes.holeTriangle;
+  straightening.map.fixedPatches = holes.holeTriangle;
 
   struct Mapped
   {
@@ -242,7 +242,7 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
   remeshOptions.level = options.level;
   remeshOptions.sampleRelaxationIterations = options.sampleRelaxationIterations;
   remeshOptions.computeDistance = false;
-  remeshOptions.holeTriangles = holes.empty() ? std::vector<char>() : holes.holeTriangle;
+  remeshOptions.holeTriangles = holes.holeTriangle;
   CollectionRemesh collection;
   if (Status s = remesh(domain, remeshModels, collection, remeshOptions); !s.ok())
     return Status::error("the remesh without the missing features: " + s.message());
