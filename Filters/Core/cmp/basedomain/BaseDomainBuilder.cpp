@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <queue>
@@ -608,6 +609,242 @@ Status removeCaps(const BaseDomain& closed, const LandmarkedCaps& capped, const 
   return {};
 }
 
+/// The shortest strip of triangles between `loop` (m vertices) and the ring
+/// `z` (n vertices, run the loop's way round the hole: z[k + 1] -> z[k] is
+/// a ring edge with the strip on its left): m + n triangles, each joining
+/// edge from a loop vertex to a ring vertex, their summed `distance` least
+/// over every first edge (Fuchs, Kedem and Uselton's optimal triangulation
+/// between two contours, by dynamic programming).
+std::vector<Triangle> shortestStrip(
+  const std::vector<int>& loop, const std::vector<int>& z, const std::function<double(int, int)>& distance)
+{
+  const int m = static_cast<int>(loop.size()), n = static_cast<int>(z.size());
+  // The shortest strip, from each possible first edge (loop[0], z[k0]).
+  const double infinity = std::numeric_limits<double>::infinity();
+  double bestCost = infinity;
+  std::vector<Triangle> bestStrip;
+  for (int k0 = 0; k0 < n; ++k0)
+  {
+    const auto ring = [&](int k) { return z[(k0 + k) % n]; };
+    // cost[i][k]: the joining edges so far, the strip at edge (loop[i % m], ring(k)).
+    std::vector<std::vector<double>> cost(m + 1, std::vector<double>(n + 1, infinity));
+    std::vector<std::vector<char>> fromLoop(m + 1, std::vector<char>(n + 1, 0));
+    cost[0][0] = distance(loop[0], ring(0));
+    for (int i = 0; i <= m; ++i)
+      for (int k = 0; k <= n; ++k)
+      {
+        if (i < m && cost[i][k] + distance(loop[(i + 1) % m], ring(k)) < cost[i + 1][k])
+        {
+          cost[i + 1][k] = cost[i][k] + distance(loop[(i + 1) % m], ring(k));
+          fromLoop[i + 1][k] = 1;
+        }
+        if (k < n && cost[i][k] + distance(loop[i % m], ring(k + 1)) < cost[i][k + 1])
+        {
+          cost[i][k + 1] = cost[i][k] + distance(loop[i % m], ring(k + 1));
+          fromLoop[i][k + 1] = 0;
+        }
+      }
+    if (!(cost[m][n] < bestCost))
+      continue;
+    bestCost = cost[m][n];
+    bestStrip.clear();
+    for (int i = m, k = n; i > 0 || k > 0;)
+    {
+      if (fromLoop[i][k])
+      {
+        bestStrip.push_back({ { loop[i - 1], loop[i % m], ring(k) } });
+        --i;
+      }
+      else
+      {
+        bestStrip.push_back({ { loop[i % m], ring(k), ring(k - 1) } });
+        --k;
+      }
+    }
+  }
+  return bestStrip;
+}
+
+/// The open L0 made round rings (`buildBaseDomain()`): the capped surface
+/// decimated to its inner landmarks and the caps' centres alone, so that
+/// each centre stands for its hole among the landmarks round it as an inner
+/// landmark would; then each centre's star is replaced by the shortest
+/// strip between its loop's landmarks and its ring (the centre's
+/// neighbours). Why: every boundary landmark then joins the ring landmarks
+/// in its own direction, as on every model of the collection, where a loop
+/// decimated with its landmarks kept can leave one of them joined to most
+/// of the ring (a belly cut open round a landmark of 12 neighbours: one of
+/// its 12 boundary landmarks joined to 9 landmarks). False, `domain`
+/// unchanged, where that does not give an L0 whose boundary loops are the
+/// surface's (too few inner landmarks, a centre whose ring touches another
+/// hole, a strip that would repeat an edge, an L0 that is not a sphere
+/// with holes).
+bool buildAroundRings(const TriangleMesh& surface, const LandmarkList& landmarks, const LandmarkedCaps& capped,
+  const BaseDomainBuilderOptions& options, BaseDomain& domain)
+{
+  const int featureCount = static_cast<int>(landmarks.size());
+  std::vector<char> onLoop(capped.mesh.vertexCount(), 0);
+  for (const std::vector<int>& loop : capped.loops)
+    for (int v : loop)
+      onLoop[v] = 1;
+  LandmarkedCaps inner;
+  inner.mesh = capped.mesh;
+  std::vector<int> featureOfKept; // per landmark of `inner`: its feature (a centre's: F + j)
+  for (int f = 0; f < featureCount; ++f)
+    if (!onLoop[landmarks[f]])
+    {
+      inner.landmarks.push_back(landmarks[f]);
+      featureOfKept.push_back(f);
+    }
+  for (std::size_t j = 0; j < capped.centres.size(); ++j)
+  {
+    inner.landmarks.push_back(capped.centres[j]);
+    featureOfKept.push_back(featureCount + static_cast<int>(j));
+  }
+  if (inner.landmarks.size() < 4)
+    return false;
+  BaseDomainBuilderOptions quiet = options;
+  quiet.progress = nullptr;
+  BaseDomainBuilderReport ignored;
+  Decimator decimator(surface, inner, quiet);
+  if (!decimator.run(ignored).ok())
+    return false;
+  const std::vector<int> keptOfVertex = featureIdsOf(inner.landmarks, inner.mesh.vertexCount());
+  std::vector<Triangle> triangles;
+  const CollapsibleMesh& mesh = decimator.mesh();
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+    if (mesh.alive(t))
+    {
+      const Triangle& tri = mesh.triangle(t);
+      Triangle out;
+      for (int k = 0; k < 3; ++k)
+      {
+        if (keptOfVertex[tri[k]] < 0)
+          return false;
+        out[k] = featureOfKept[keptOfVertex[tri[k]]];
+      }
+      triangles.push_back(out);
+    }
+  const auto distance = [&](int a, int b) {
+    return (surface.points[landmarks[a]] - surface.points[landmarks[b]]).norm();
+  };
+  std::vector<std::vector<int>> expected;
+  for (std::size_t j = 0; j < capped.loops.size(); ++j)
+  {
+    const int centre = featureCount + static_cast<int>(j);
+    std::vector<int> loop; // the loop's landmarks, as features, in its order
+    for (int v : capped.loops[j])
+      for (int f = 0; f < featureCount; ++f)
+        if (landmarks[f] == v)
+          loop.push_back(f);
+    // The ring: (a, b, centre) runs a -> b round the centre.
+    std::map<int, int> ringNext, ringPrevious;
+    std::vector<Triangle> rest;
+    for (const Triangle& tri : triangles)
+    {
+      int k = 0;
+      while (k < 3 && tri[k] != centre)
+        ++k;
+      if (k == 3)
+      {
+        rest.push_back(tri);
+        continue;
+      }
+      const int a = tri[(k + 1) % 3], b = tri[(k + 2) % 3];
+      if (a >= featureCount || b >= featureCount || !ringNext.emplace(a, b).second ||
+        !ringPrevious.emplace(b, a).second)
+        return false; // another centre on the ring, or not a fan
+    }
+    const int n = static_cast<int>(ringNext.size());
+    if (n < 3)
+      return false;
+    // Walked against its direction, as `shortestStrip()` takes it.
+    std::vector<int> z{ ringNext.begin()->first };
+    while (static_cast<int>(z.size()) < n)
+    {
+      const auto found = ringPrevious.find(z.back());
+      if (found == ringPrevious.end() || found->second == z.front())
+        return false;
+      z.push_back(found->second);
+    }
+    if (ringPrevious.at(z.back()) != z.front())
+      return false;
+    // Joined by direction round the hole: the angle between a boundary
+    // landmark and a ring landmark seen from the hole's centre, in the
+    // plane the loop spans (the loop is small beside its ring, so that
+    // distances alone join one boundary landmark to most of the ring).
+    const Vec3 centrePoint = capped.mesh.points[capped.centres[j]];
+    Vec3 normal = Vec3::Zero();
+    const std::vector<int>& rim = capped.loops[j];
+    for (std::size_t i = 0; i < rim.size(); ++i)
+      normal += (capped.mesh.points[rim[i]] - centrePoint).cross(capped.mesh.points[rim[(i + 1) % rim.size()]] - centrePoint);
+    if (!(normal.norm() > 0.0))
+      return false;
+    normal.normalize();
+    const Vec3 first = (surface.points[landmarks[loop.front()]] - centrePoint);
+    const Vec3 e1 = (first - first.dot(normal) * normal).normalized();
+    const Vec3 e2 = normal.cross(e1);
+    if (!e1.allFinite())
+      return false;
+    const auto angleOf = [&](int f) {
+      const Vec3 d = surface.points[landmarks[f]] - centrePoint;
+      return std::atan2(d.dot(e2), d.dot(e1));
+    };
+    double scale = 0.0;
+    for (int a : loop)
+      for (int b : z)
+        scale = std::max(scale, distance(a, b));
+    const auto byDirection = [&](int a, int b) {
+      const double turn = std::abs(std::remainder(angleOf(a) - angleOf(b), 2.0 * kPi));
+      return turn + 1e-2 * distance(a, b) / scale;
+    };
+    const std::vector<Triangle> strip = shortestStrip(loop, z, byDirection);
+    if (strip.size() != loop.size() + z.size())
+      return false;
+    rest.insert(rest.end(), strip.begin(), strip.end());
+    triangles = std::move(rest);
+    expected.push_back(fromSmallest(loop));
+  }
+  BaseDomain built;
+  for (int f = 0; f < featureCount; ++f)
+  {
+    built.mesh.points.push_back(surface.points[landmarks[f]]);
+    built.featureIds.push_back(f);
+  }
+  built.mesh.triangles = std::move(triangles);
+  // Each directed edge once (oriented, no edge repeated), every landmark on
+  // a triangle, the boundary loops the surface's, and closed again a valid
+  // L0.
+  std::set<std::pair<int, int>> runs;
+  std::vector<char> used(featureCount, 0);
+  for (const Triangle& tri : built.mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      used[tri[k]] = 1;
+      if (!runs.insert({ tri[k], tri[(k + 1) % 3] }).second)
+        return false;
+    }
+  if (std::find(used.begin(), used.end(), 0) != used.end())
+    return false;
+  std::vector<std::vector<int>> loops;
+  if (!boundaryLoops(built.mesh, loops).ok())
+    return false;
+  for (std::vector<int>& loop : loops)
+    loop = fromSmallest(loop);
+  std::sort(loops.begin(), loops.end());
+  std::sort(expected.begin(), expected.end());
+  // A sphere with as many holes as loops: V - E + F = 2 - loops.
+  std::set<std::pair<int, int>> edges;
+  for (const auto& [a, b] : runs)
+    edges.insert(std::minmax(a, b));
+  const long euler = static_cast<long>(featureCount) - static_cast<long>(edges.size()) +
+    static_cast<long>(built.mesh.triangles.size());
+  if (loops != expected || euler != 2 - static_cast<long>(loops.size()))
+    return false;
+  domain = std::move(built);
+  return true;
+}
+
 /// Re-triangulates the band of an open L0 round each boundary loop (the
 /// triangles with a corner on the loop) as the shortest strip between the
 /// loop and the ring of landmarks round it: each boundary landmark is
@@ -686,49 +923,7 @@ int restripBoundaryBands(BaseDomain& domain)
     const auto closing = ringPrevious.find(z.back());
     if (static_cast<int>(z.size()) != n || closing == ringPrevious.end() || closing->second != z.front())
       continue; // the ring is not one cycle
-    // The shortest strip, from each possible first edge (loop[0], z[k0]).
-    const double infinity = std::numeric_limits<double>::infinity();
-    double bestCost = infinity;
-    std::vector<Triangle> bestStrip;
-    for (int k0 = 0; k0 < n; ++k0)
-    {
-      const auto ring = [&](int k) { return z[(k0 + k) % n]; };
-      // cost[i][k]: the joining edges so far, the strip at edge (loop[i % m], ring(k)).
-      std::vector<std::vector<double>> cost(m + 1, std::vector<double>(n + 1, infinity));
-      std::vector<std::vector<char>> fromLoop(m + 1, std::vector<char>(n + 1, 0));
-      cost[0][0] = distance(loop[0], ring(0));
-      for (int i = 0; i <= m; ++i)
-        for (int k = 0; k <= n; ++k)
-        {
-          if (i < m && cost[i][k] + distance(loop[(i + 1) % m], ring(k)) < cost[i + 1][k])
-          {
-            cost[i + 1][k] = cost[i][k] + distance(loop[(i + 1) % m], ring(k));
-            fromLoop[i + 1][k] = 1;
-          }
-          if (k < n && cost[i][k] + distance(loop[i % m], ring(k + 1)) < cost[i][k + 1])
-          {
-            cost[i][k + 1] = cost[i][k] + distance(loop[i % m], ring(k + 1));
-            fromLoop[i][k + 1] = 0;
-          }
-        }
-      if (!(cost[m][n] < bestCost))
-        continue;
-      bestCost = cost[m][n];
-      bestStrip.clear();
-      for (int i = m, k = n; i > 0 || k > 0;)
-      {
-        if (fromLoop[i][k])
-        {
-          bestStrip.push_back({ { loop[i - 1], loop[i % m], ring(k) } });
-          --i;
-        }
-        else
-        {
-          bestStrip.push_back({ { loop[i % m], ring(k), ring(k - 1) } });
-          --k;
-        }
-      }
-    }
+    const std::vector<Triangle> bestStrip = shortestStrip(loop, z, distance);
     // The new joining edges must not be edges already (outside the band).
     std::set<std::pair<int, int>> outside;
     std::vector<char> inBand(triangles.size(), 0);
@@ -918,9 +1113,13 @@ Status buildBaseDomain(const TriangleMesh& surface, const LandmarkList& landmark
       return Status::error("internal error: the decimated base domain (its holes capped) is invalid: " + s.message());
     if (Status s = removeCaps(decimated, capped, featureOfVertex, featureCount, domain); !s.ok())
       return s;
-    // The band round each hole made anew where it is a strip, then every
-    // inner edge towards Delaunay's criterion.
-    out.restripedBands = restripBoundaryBands(domain);
+    // Made round rings where that works; else the band round each hole
+    // made anew where it is a strip. Then every inner edge towards
+    // Delaunay's criterion.
+    if (options.aroundRings && buildAroundRings(surface, landmarks, capped, options, domain))
+      out.ringedHoles = static_cast<int>(capped.loops.size());
+    else
+      out.restripedBands = restripBoundaryBands(domain);
     out.flips += flipToDelaunay(domain);
   }
   measureQuality(domain, out);

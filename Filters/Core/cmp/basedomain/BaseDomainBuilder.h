@@ -19,6 +19,13 @@ struct BaseDomainBuilderOptions
   /// \brief Weight of triangle shape against geometric error in the collapse
   ///        cost. Higher favours well-shaped base triangles.
   double shapeWeight = 1.0;
+  /// \brief Open surfaces: each hole stands among the landmarks round it as
+  ///        an inner landmark would (the surface decimated with its holes
+  ///        capped and its boundary landmarks let go), then its loop is
+  ///        joined to that ring by the shortest strip. false: the loops'
+  ///        landmarks are kept through the decimation, and the band round
+  ///        a hole is made anew only where it is a strip already.
+  bool aroundRings = true;
   /// \brief Called with the fraction of the work done, in [0, 1].
   std::function<void(double)> progress;
 };
@@ -30,6 +37,7 @@ struct BaseDomainBuilderReport
   int foldingCollapses = 0;      ///< Collapses that had to fold a triangle over.
   int flips = 0;                 ///< Edge flips used to unblock a vertex, and those that make an open L0 Delaunay.
   int restripedBands = 0;        ///< Bands round the holes of an open L0 made anew as the shortest strip.
+  int ringedHoles = 0;           ///< Holes of an open L0 joined to their ring of landmarks (`aroundRings`).
   double minAngleDegrees = 0.0;  ///< Smallest angle of the base triangles.
   double meanShapeQuality = 0.0; ///< Mean of 4*sqrt(3)*area/sum(edge^2), 1 = equilateral.
 };
@@ -48,27 +56,35 @@ struct BaseDomainBuilderReport
 /// Surfaces with boundaries (beyond the paper, whose future work lists
 /// them; Documentation/algorithm.md, "Surfaces with boundaries"): each
 /// boundary loop (`boundaryLoops()`) is closed by a fan from a new vertex
-/// (`capLoop()`), which is kept like a landmark; a non-landmark vertex of a
-/// loop only collapses into one of its two neighbours along the loop,
-/// nothing collapses into a cap's centre, and no edge of a cap (a spoke or
-/// a loop edge) is flipped. Once only the landmarks and the centres are
-/// left, the centres and their triangles are removed: `domain` is then a
-/// triangulated sphere with as many holes as the surface, whose boundary
-/// loops are exactly the landmarks on the surface's loops, in the same
-/// cyclic order (both with the surface on the left), and whose triangles
-/// are oriented like the surface's. Boundary landmarks only collapse along
-/// their loop, so a crowded loop can leave one of them joined to most of
-/// the landmarks round it, and every other model's curves then wind round
-/// the hole to reach them. So the band of triangles round each hole is
+/// (`capLoop()`), which is kept like a landmark. With `aroundRings` (the
+/// default), the boundary landmarks are let go: the capped surface is
+/// decimated to its inner landmarks and the centres, so that each centre's
+/// neighbours are the ring of landmarks round its hole, and each centre's
+/// star is replaced by the strip between its loop's landmarks and that
+/// ring that joins each boundary landmark to the ring in its own direction
+/// round the hole (the least summed angle seen from the hole's centre in
+/// the plane the loop spans; Fuchs, Kedem and Uselton's optimal
+/// triangulation between two contours). Should that not give an `L0`
+/// whose loops are the surface's (fewer than 4 inner landmarks and
+/// centres, a ring through another hole's centre), or without
+/// `aroundRings`: a non-landmark vertex of a loop only collapses into one
+/// of its two neighbours along the loop, nothing collapses into a cap's
+/// centre, no edge of a cap is flipped, the centres and their triangles
+/// are removed at the end, and the band of triangles round each hole is
 /// made anew where it is a strip between the loop and one ring of
-/// landmarks (the shortest strip: Fuchs, Kedem and Uselton's optimal
-/// triangulation between two contours, on the landmarks' positions), and
-/// then every inner edge is flipped towards Delaunay's criterion on those
+/// landmarks (the shortest strip, on the landmarks' positions); a crowded
+/// loop can then leave one boundary landmark joined to most of the ring,
+/// and every other model's curves wind round the hole to reach it. Either
+/// way `domain` is a triangulated sphere with as many holes as the
+/// surface, whose boundary loops are exactly the landmarks on the
+/// surface's loops, in the same cyclic order (both with the surface on the
+/// left), and whose triangles are oriented like the surface's; every inner
+/// edge is then flipped towards Delaunay's criterion on the landmarks'
 /// positions (never a boundary edge, never into a chord between two
 /// boundary landmarks or across a folded quadrilateral; counted in the
-/// report's `flips`). `closeBaseDomain()` (layout) closes it
-/// again for the later stages. The report's angles and shapes are those of
-/// `domain`'s own triangles.
+/// report's `flips`). `closeBaseDomain()` (layout) closes it again for the
+/// later stages. The report's angles and shapes are those of `domain`'s
+/// own triangles.
 ///
 /// \pre `surface` is a closed genus-0 triangle surface, or a genus-0
 ///      surface with boundary loops each passing through at least 3
