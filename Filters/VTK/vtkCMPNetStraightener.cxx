@@ -206,6 +206,8 @@ int vtkCMPNetStraightener::RequestData(
     status = cmp::straighten(traced, domain, straight, parameterization, options, &straightenReport);
   const cmp::NetStraightenerReport& report = straightenReport.net;
   const cmp::FreeCurvesReport& freeCurves = straightenReport.freeCurves;
+  if (status.ok() && !straightenReport.tracedCurvesKept.empty())
+    vtkWarningMacro(<< model << straightenReport.tracedCurvesKept);
   if (status.ok() && this->FreeCurves && !freeCurves.applied)
     vtkWarningMacro(<< model << "FreeCurves kept the straightened curves: " << freeCurves.reason);
   if (!status.ok())

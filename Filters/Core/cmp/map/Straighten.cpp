@@ -52,6 +52,26 @@ Status straighten(const TracedNet& traced, const BaseDomain& domain, Straightene
   {
     part = Clock::now();
     status = parameterizePatches(straight.net, domain, parameterization, options.patches);
+    if (!status.ok())
+    {
+      // A straightened patch that cannot be mapped onto its base triangle:
+      // the traced curves instead (no sweep), which the map frees all the
+      // same, rather than failing the model.
+      NetStraightenerOptions traceOnly = netOptions;
+      traceOnly.maxSweeps = 0;
+      StraightenedNet kept;
+      NetStraightenerReport keptReport;
+      if (straightenNet(traced, domain, kept, traceOnly, &keptReport).ok() &&
+        parameterizePatches(kept.net, domain, parameterization, options.patches).ok())
+      {
+        r.tracedCurvesKept = "the straightened net could not be parameterized (" + status.message() +
+          "), so the traced curves were kept";
+        straight = std::move(kept);
+        r.net = keptReport;
+        r.straightenedNetLength = r.net.netLengthAfter;
+        status = Status();
+      }
+    }
     r.parameterizeSeconds = since(part);
   }
   const bool tooLarge = options.freeCurvesMaximumTriangles > 0 &&

@@ -18,6 +18,7 @@
 #include <cmp/mesh/Status.h>
 
 #include <functional>
+#include <string>
 
 namespace cmp
 {
@@ -66,6 +67,12 @@ struct StraightenReport
   ///        (`straightenNet()`'s `netLengthAfter`): the freed curves follow
   ///        the map, not shortest paths, and are longer.
   double straightenedNetLength = 0.0;
+  /// \brief Why the traced curves were kept instead of the straightened
+  ///        ones (empty: they were straightened): a straightened patch whose
+  ///        map onto its base triangle could not be computed (its mean value
+  ///        system singular), where the traced net's patches can be. The
+  ///        curves are then freed from the traced net.
+  std::string tracedCurvesKept;
   /// \brief `freeCurves()`'s report (untouched without `freeCurves`).
   FreeCurvesReport freeCurves;
   double straightenSeconds = 0.0;   ///< `straightenNet()` alone.
