@@ -609,6 +609,32 @@ Status removeCaps(const BaseDomain& closed, const LandmarkedCaps& capped, const 
   return {};
 }
 
+/// The ring `ringNext` (each ring vertex -> the next, the strip on the
+/// left) walked against its direction, as `shortestStrip()` takes it:
+/// z[k + 1] -> z[k] is a ring edge. Empty unless the ring is one cycle of
+/// at least 3 vertices.
+std::vector<int> ringAgainstItsDirection(const std::map<int, int>& ringNext)
+{
+  const int n = static_cast<int>(ringNext.size());
+  std::map<int, int> ringPrevious;
+  for (const auto& [a, b] : ringNext)
+    ringPrevious[b] = a;
+  if (n < 3 || static_cast<int>(ringPrevious.size()) != n)
+    return {};
+  std::vector<int> z{ ringNext.begin()->first };
+  while (static_cast<int>(z.size()) < n)
+  {
+    const auto found = ringPrevious.find(z.back());
+    if (found == ringPrevious.end() || found->second == z.front())
+      return {};
+    z.push_back(found->second);
+  }
+  const auto closing = ringPrevious.find(z.back());
+  if (closing == ringPrevious.end() || closing->second != z.front())
+    return {};
+  return z;
+}
+
 /// The shortest strip of triangles between `loop` (m vertices) and the ring
 /// `z` (n vertices, run the loop's way round the hole: z[k + 1] -> z[k] is
 /// a ring edge with the strip on its left): m + n triangles, each joining
@@ -728,17 +754,17 @@ bool buildAroundRings(const TriangleMesh& surface, const LandmarkList& landmarks
   const auto distance = [&](int a, int b) {
     return (surface.points[landmarks[a]] - surface.points[landmarks[b]]).norm();
   };
+  const std::vector<int> featureOfVertex = featureIdsOf(landmarks, capped.mesh.vertexCount());
   std::vector<std::vector<int>> expected;
   for (std::size_t j = 0; j < capped.loops.size(); ++j)
   {
     const int centre = featureCount + static_cast<int>(j);
     std::vector<int> loop; // the loop's landmarks, as features, in its order
     for (int v : capped.loops[j])
-      for (int f = 0; f < featureCount; ++f)
-        if (landmarks[f] == v)
-          loop.push_back(f);
+      if (featureOfVertex[v] >= 0)
+        loop.push_back(featureOfVertex[v]);
     // The ring: (a, b, centre) runs a -> b round the centre.
-    std::map<int, int> ringNext, ringPrevious;
+    std::map<int, int> ringNext;
     std::vector<Triangle> rest;
     for (const Triangle& tri : triangles)
     {
@@ -751,23 +777,11 @@ bool buildAroundRings(const TriangleMesh& surface, const LandmarkList& landmarks
         continue;
       }
       const int a = tri[(k + 1) % 3], b = tri[(k + 2) % 3];
-      if (a >= featureCount || b >= featureCount || !ringNext.emplace(a, b).second ||
-        !ringPrevious.emplace(b, a).second)
+      if (a >= featureCount || b >= featureCount || !ringNext.emplace(a, b).second)
         return false; // another centre on the ring, or not a fan
     }
-    const int n = static_cast<int>(ringNext.size());
-    if (n < 3)
-      return false;
-    // Walked against its direction, as `shortestStrip()` takes it.
-    std::vector<int> z{ ringNext.begin()->first };
-    while (static_cast<int>(z.size()) < n)
-    {
-      const auto found = ringPrevious.find(z.back());
-      if (found == ringPrevious.end() || found->second == z.front())
-        return false;
-      z.push_back(found->second);
-    }
-    if (ringPrevious.at(z.back()) != z.front())
+    const std::vector<int> z = ringAgainstItsDirection(ringNext);
+    if (z.empty())
       return false;
     // Joined by direction round the hole: the angle between a boundary
     // landmark and a ring landmark seen from the hole's centre, in the
@@ -906,22 +920,9 @@ int restripBoundaryBands(BaseDomain& domain)
     if (!strip || n < 3 || static_cast<int>(band.size()) != m + n)
       continue;
     // The ring in order, walked against its direction so that it runs the
-    // loop's way round the hole: z[k + 1] -> z[k] is a ring edge.
-    std::vector<int> z{ ringNext.begin()->first };
-    std::map<int, int> ringPrevious;
-    for (const auto& [a, b] : ringNext)
-      ringPrevious[b] = a;
-    if (static_cast<int>(ringPrevious.size()) != n)
-      continue;
-    while (static_cast<int>(z.size()) < n)
-    {
-      const auto found = ringPrevious.find(z.back());
-      if (found == ringPrevious.end() || found->second == z.front())
-        break;
-      z.push_back(found->second);
-    }
-    const auto closing = ringPrevious.find(z.back());
-    if (static_cast<int>(z.size()) != n || closing == ringPrevious.end() || closing->second != z.front())
+    // loop's way round the hole.
+    const std::vector<int> z = ringAgainstItsDirection(ringNext);
+    if (z.empty())
       continue; // the ring is not one cycle
     const std::vector<Triangle> bestStrip = shortestStrip(loop, z, distance);
     // The new joining edges must not be edges already (outside the band).
