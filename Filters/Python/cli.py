@@ -318,9 +318,12 @@ def _place_missing_landmarks(args, models, mine, ranks, report):
                 apply_placed_landmarks(model, model.placed)
         if ranks.rank == 0:
             for entry in entries:
+                climb = entry.get("climbed_per_sqrt_area") or 0.0
                 print("  %s: feature %d placed at vertex %d (the models that have it agree within %.1f%% of "
-                      "the square root of its area)" % (model.name, entry["feature"], entry["vertex"],
-                                                        100 * entry["spread_per_sqrt_area"]), flush=True)
+                      "the square root of its area%s)" % (model.name, entry["feature"], entry["vertex"],
+                                                          100 * entry["spread_per_sqrt_area"],
+                                                          "; it climbed %.1f%% from there to the tip they have "
+                                                          "it at" % (100 * climb) if climb > 0 else ""), flush=True)
             if error:
                 print("  %s: FAILED: %s" % (model.name, error), flush=True)
 

@@ -106,7 +106,8 @@ def missing_features(surface):
 def place_missing_landmarks(models, base_domain_model):
     """Missing Landmark Placer on the surfaces of `models` (a multiblock, one
     block per model): for each model, the list of what was placed on it,
-    {"feature", "vertex", "position", "sources", "spread"}, and the message
+    {"feature", "vertex", "position", "spread_per_sqrt_area",
+    "climbed_per_sqrt_area"}, and the message
     of a model whose features could not be placed (None if they were).
     Raises StageError if the filter fails."""
     blocks = vtkMultiBlockDataSet()
@@ -123,13 +124,16 @@ def place_missing_landmarks(models, base_domain_model):
         marks = surface.GetPointData().GetArray(array_names.PLACED_FEATURE_ID_ARRAY)
         spreads = surface.GetFieldData().GetArray(array_names.PLACED_FEATURE_SPREAD_ARRAY)
         features = surface.GetFieldData().GetArray(array_names.PLACED_FEATURES_ARRAY)
+        climbs = surface.GetFieldData().GetArray(array_names.PLACED_FEATURE_CLIMB_ARRAY)
         spread_of = {int(features.GetTuple1(i)): spreads.GetTuple1(i) for i in range(features.GetNumberOfTuples())}
+        climb_of = {int(features.GetTuple1(i)): climbs.GetTuple1(i) for i in range(features.GetNumberOfTuples())}
         entries = []
         for vertex in numpy.flatnonzero(vtk_to_numpy(marks) >= 0).tolist():
             feature = int(marks.GetTuple1(vertex))
             entries.append({"feature": feature, "vertex": vertex,
                             "position": [significant(x) for x in surface.GetPoint(vertex)],
-                            "spread_per_sqrt_area": significant(spread_of[feature])})
+                            "spread_per_sqrt_area": significant(spread_of[feature]),
+                            "climbed_per_sqrt_area": significant(climb_of[feature])})
         entries.sort(key=lambda entry: entry["feature"])
         left = [f for f in model.missing if f not in {entry["feature"] for entry in entries}]
         results.append((entries, "feature%s %s could not be placed" % ("" if len(left) == 1 else "s",

@@ -30,6 +30,10 @@ constexpr const char* kPlacedFeaturesArray = "PlacedFeatures";
 /// \brief Field double array: per placed feature, the median distance of
 ///        the points the sources carry it to, over sqrt(area).
 constexpr const char* kPlacedFeatureSpreadArray = "PlacedFeatureSpread";
+/// \brief Field double array: per placed feature, how far it climbed from
+///        where the maps carried it to the tip its sources have it at, over
+///        sqrt(area) (0: it did not climb).
+constexpr const char* kPlacedFeatureClimbArray = "PlacedFeatureClimb";
 /// \brief Field array mapping a file's point ids to welded ids.
 constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
 /// \brief One-value field string array naming the file a surface was read

@@ -87,6 +87,7 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
   options.baseDomainModel = this->BaseDomainModel;
   options.level = this->Level;
   options.maximumSources = this->MaximumSources;
+  options.climbToTips = this->ClimbToTips;
   options.progress = [this](double f) { this->UpdateProgress(0.95 * f); };
   cmp::MissingLandmarkReport report;
   if (cmp::Status s = cmp::placeMissingLandmarks(surfaces, landmarks, options, &report); !s.ok())
@@ -108,18 +109,21 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
     cmp::bridge::setFeatureIds(result, landmarks[m]);
     std::vector<int> placedIds(static_cast<std::size_t>(result->GetNumberOfPoints()), -1);
     std::vector<int> features;
-    std::vector<double> spreads;
+    std::vector<double> spreads, climbs;
     for (const cmp::PlacedLandmark& placed : report.placed)
       if (placed.model == static_cast<int>(m))
       {
         placedIds[placed.vertex] = placed.feature;
         features.push_back(placed.feature);
         spreads.push_back(placed.spread);
+        climbs.push_back(placed.climbed);
       }
     result->GetPointData()->AddArray(cmp::bridge::intArray(cmp::bridge::kPlacedFeatureIdArray, placedIds));
     result->GetFieldData()->AddArray(cmp::bridge::intArray(cmp::bridge::kPlacedFeaturesArray, features));
     result->GetFieldData()->AddArray(
       cmp::bridge::valueArray<vtkDoubleArray>(cmp::bridge::kPlacedFeatureSpreadArray, spreads));
+    result->GetFieldData()->AddArray(
+      cmp::bridge::valueArray<vtkDoubleArray>(cmp::bridge::kPlacedFeatureClimbArray, climbs));
     results.push_back(result);
   }
   cmp::bridge::assembleOutput(input, output, results);
@@ -133,4 +137,5 @@ void vtkCMPMissingLandmarkPlacer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BaseDomainModel: " << this->BaseDomainModel << "\n";
   os << indent << "Level: " << this->Level << "\n";
   os << indent << "MaximumSources: " << this->MaximumSources << "\n";
+  os << indent << "ClimbToTips: " << this->ClimbToTips << "\n";
 }

@@ -66,6 +66,15 @@ public:
   vtkSetMacro(MaximumSources, int);
   /// \brief The most models a missing feature is carried from (0: all).
   vtkGetMacro(MaximumSources, int);
+  /// \brief Whether a feature that the sources have at the tip of a
+  ///        protrusion (a foot, a nose, a horn) climbs from where the maps
+  ///        carry it to the tip near there (default on; the field array
+  ///        `PlacedFeatureClimb` says how far).
+  vtkSetMacro(ClimbToTips, bool);
+  /// \brief Whether features at a tip on the sources climb to the tip.
+  vtkGetMacro(ClimbToTips, bool);
+  /// \brief Turns climbing to tips on.
+  vtkBooleanMacro(ClimbToTips, bool);
 
 protected:
   vtkCMPMissingLandmarkPlacer() = default;
@@ -81,4 +90,5 @@ private:
   int BaseDomainModel = -1;
   int Level = 4;
   int MaximumSources = 8;
+  bool ClimbToTips = true;
 };

@@ -25,7 +25,11 @@ void expectError(const Status& status, const std::string& fragment)
 
 // Issue 27 A: take landmarks away from models where we know them and place
 // them from the others. The issue's target is a mean error below 5% of
-// sqrt(area) and a worst below 12%.
+// sqrt(area) and a worst below 12%. Features 5, 9 and 11 are feet, at the
+// tip of a protrusion on the sources: they climb from where the maps carry
+// them to the tip near there (`climbToTips`), which must bring them closer;
+// the others (3, on the head; 13, at the rump; 17, by a front leg) stay
+// where the maps carry them.
 TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
 {
   std::vector<test::LandmarkedModel> models;
@@ -38,20 +42,25 @@ TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
     surfaces.push_back(&model.data.mesh);
     landmarks.push_back(model.landmarks);
   }
-  // Two features of one model and one of another (13: the root of the tail).
-  const std::vector<std::pair<int, int>> taken = { { 1, 3 }, { 1, 17 }, { 3, 13 } };
+  // By model, then feature, as the report lists them.
+  const std::vector<std::pair<int, int>> taken = { { 1, 3 }, { 1, 9 }, { 1, 17 }, { 3, 5 }, { 3, 11 }, { 3, 13 } };
+  const std::vector<int> tips = { 5, 9, 11 };
   for (auto [m, f] : taken)
     landmarks[m][f] = kMissingLandmark;
 
   MissingLandmarkReport report;
   const Status status = placeMissingLandmarks(surfaces, landmarks, {}, &report);
   ASSERT_TRUE(status.ok()) << status.message();
-  EXPECT_EQ(report.missingFeatures, (std::vector<int>{ 3, 13, 17 }));
+  EXPECT_EQ(report.missingFeatures, (std::vector<int>{ 3, 5, 9, 11, 13, 17 }));
   EXPECT_EQ(report.baseDomainModel, 0);
   for (std::size_t m = 0; m < models.size(); ++m)
     EXPECT_EQ(report.modelErrors[m], "") << models[m].name;
   ASSERT_EQ(report.placed.size(), taken.size());
-  double sum = 0.0, worst = 0.0;
+  auto error = [&](int m, int f, int vertex) {
+    const TriangleMesh& mesh = models[m].data.mesh;
+    return (mesh.points[vertex] - mesh.points[models[m].landmarks[f]]).norm() / std::sqrt(surfaceArea(mesh));
+  };
+  double sum = 0.0, worst = 0.0, tipsMapped = 0.0, tipsClimbed = 0.0;
   for (std::size_t i = 0; i < taken.size(); ++i)
   {
     const auto [m, f] = taken[i];
@@ -60,14 +69,27 @@ TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
     EXPECT_EQ(placed.feature, f);
     EXPECT_EQ(landmarks[m][f], placed.vertex);
     EXPECT_EQ(placed.sources, 3); // the three models with every feature
-    const TriangleMesh& mesh = models[m].data.mesh;
-    const double error =
-      (mesh.points[placed.vertex] - mesh.points[models[m].landmarks[f]]).norm() / std::sqrt(surfaceArea(mesh));
-    sum += error;
-    worst = std::max(worst, error);
-    EXPECT_LT(error, 0.12) << models[m].name << " feature " << f;
+    const double placedError = error(m, f, placed.vertex), mappedError = error(m, f, placed.mappedVertex);
+    std::cout << models[m].name << " feature " << f << ": " << 100.0 * placedError << "% of sqrt(area) (the maps: "
+              << 100.0 * mappedError << "%, climbed " << 100.0 * placed.climbed << "%)\n";
+    sum += placedError;
+    worst = std::max(worst, placedError);
+    EXPECT_LT(placedError, 0.12) << models[m].name << " feature " << f;
+    if (std::find(tips.begin(), tips.end(), f) != tips.end())
+    {
+      EXPECT_GT(placed.climbed, 0.0) << models[m].name << " feature " << f;
+      EXPECT_LE(placedError, mappedError) << models[m].name << " feature " << f;
+      tipsMapped += mappedError;
+      tipsClimbed += placedError;
+    }
+    else
+    {
+      EXPECT_EQ(placed.climbed, 0.0) << models[m].name << " feature " << f;
+      EXPECT_EQ(placed.vertex, placed.mappedVertex) << models[m].name << " feature " << f;
+    }
   }
   EXPECT_LT(sum / taken.size(), 0.05);
+  EXPECT_LT(tipsClimbed, 0.7 * tipsMapped);
   for (const LandmarkList& list : landmarks)
     EXPECT_EQ(missingLandmarkCount(list), 0);
   EXPECT_TRUE(validateLandmarks(landmarks[1], surfaces[1]->vertexCount()).ok());
@@ -108,6 +130,15 @@ TEST(MissingLandmarks, RefusesWhatCannotBePlaced)
   negative = MissingLandmarkOptions();
   negative.similarityWidth = -0.1;
   expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks, negative), "the similarity width must be 0");
+  negative = MissingLandmarkOptions();
+  negative.tipRadius = 0.0;
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks, negative), "the tip radius and reach must be positive");
+  negative = MissingLandmarkOptions();
+  negative.tipReach = std::nan("");
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks, negative), "the tip radius and reach must be positive");
+  negative = MissingLandmarkOptions();
+  negative.tipTolerance = -0.01;
+  expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks, negative), "the tip tolerance 0 or positive");
   landmarks = { full, { 0, 1 } };
   expectError(placeMissingLandmarks({ &mesh, &mesh }, landmarks), "model 1 has 2 features but model 0 has 6");
   landmarks = { full, { 0, 1, 2, 3, 4, 99 } };
@@ -235,3 +266,4 @@ TEST(MissingLandmarks, PlacesInnerLandmarksOnOpenModels)
   expectError(placeMissingLandmarks(surfaces, landmarks),
     "feature " + std::to_string(boundaryFeature) + " lies on model 0's boundary: a boundary landmark cannot be placed");
 }
+

@@ -100,6 +100,11 @@ def main():
                     "block %d's PlacedFeatures" % block)
         for feature in features:
             check_equal(ids[feature], marks[feature], "block %d: FeatureId and PlacedFeatureId" % block)
+        climbs = field.GetArray("PlacedFeatureClimb")
+        check(climbs is not None, "block %d has PlacedFeatureClimb" % block)
+        check_equal(climbs.GetNumberOfTuples(), len(features), "block %d's PlacedFeatureClimb" % block)
+        check(all(climbs.GetValue(i) >= 0.0 for i in range(climbs.GetNumberOfTuples())),
+              "block %d's climbs are distances" % block)
         if truth is not None:
             # The blob's missing feature, carried from the capsule, lands
             # near where the file had it (a bump of the blob).
@@ -107,6 +112,13 @@ def main():
             span = max(points.max(axis=0) - points.min(axis=0))
             error = math.dist(points[ids[2]], points[truth])
             check(error < 0.25 * span, "blob's feature 2 placed %.3f from the file's (span %.3f)" % (error, span))
+    # Without climbing to tips, no placed feature climbs.
+    staying = names["MissingLandmarkPlacer"](Input=group, ClimbToTips=0)
+    staying_output = servermanager.Fetch(staying)
+    for block in range(3):
+        climbs = staying_output.GetBlock(block).GetFieldData().GetArray("PlacedFeatureClimb")
+        check(all(climbs.GetValue(i) == 0.0 for i in range(climbs.GetNumberOfTuples())),
+              "block %d climbed with ClimbToTips off" % block)
     # A complete model passes through as it was.
     capsule_before = feature_ids(servermanager.Fetch(capsule))
     check_equal(feature_ids(placed.GetBlock(1)), capsule_before, "the capsule's landmarks")

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <queue>
+#include <utility>
 
 namespace cmp
 {
@@ -108,6 +110,95 @@ int nearestFreeVertex(const TriangleMesh& mesh, int near, const Vec3& p, const s
       bestDistance = (mesh.points[v] - p).norm();
     }
   return best;
+}
+
+/// The edges of a mesh as adjacency lists with their lengths.
+struct EdgeGraph
+{
+  std::vector<int> first; ///< Per vertex, where its arcs start in `to` (one more entry at the end).
+  std::vector<int> to;
+  std::vector<double> length;
+};
+
+EdgeGraph edgeGraph(const TriangleMesh& mesh)
+{
+  std::vector<std::pair<int, int>> arcs;
+  arcs.reserve(6 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      arcs.emplace_back(t[k], t[(k + 1) % 3]);
+      arcs.emplace_back(t[(k + 1) % 3], t[k]);
+    }
+  std::sort(arcs.begin(), arcs.end());
+  arcs.erase(std::unique(arcs.begin(), arcs.end()), arcs.end());
+  EdgeGraph graph;
+  graph.first.assign(mesh.vertexCount() + 1, 0);
+  for (const auto& [a, b] : arcs)
+  {
+    ++graph.first[a + 1];
+    graph.to.push_back(b);
+    graph.length.push_back((mesh.points[a] - mesh.points[b]).norm());
+  }
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    graph.first[v + 1] += graph.first[v];
+  return graph;
+}
+
+/// Edge-path distances from `sources` (0 there), infinite beyond `limit`.
+std::vector<double> edgeDistances(const EdgeGraph& graph, const std::vector<int>& sources, double limit)
+{
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> distance(graph.first.size() - 1, infinity);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (int v : sources)
+  {
+    distance[v] = 0.0;
+    queue.emplace(0.0, v);
+  }
+  while (!queue.empty())
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v])
+      continue;
+    for (int k = graph.first[v]; k < graph.first[v + 1]; ++k)
+    {
+      const double next = d + graph.length[k];
+      const int u = graph.to[k];
+      if (next < distance[u] && next <= limit)
+      {
+        distance[u] = next;
+        queue.emplace(next, u);
+      }
+    }
+  }
+  return distance;
+}
+
+/// Climbs `height` from `from`: to the highest vertex within edge-path
+/// distance `step` of the current one while that one is higher. Returns the
+/// vertex where the climb stops (a peak at the scale of `step`), or -1 if
+/// it would go farther than `reach` from `from`.
+int climb(const EdgeGraph& graph, const std::vector<double>& height, int from, double step, double reach)
+{
+  const std::vector<double> fromStart = edgeDistances(graph, { from }, reach);
+  int v = from;
+  // The height rises at every move, so the climb ends.
+  for (;;)
+  {
+    const std::vector<double> ball = edgeDistances(graph, { v }, step);
+    int best = v;
+    for (std::size_t u = 0; u < ball.size(); ++u)
+      if (std::isfinite(ball[u]) && height[u] > height[best])
+        best = static_cast<int>(u);
+    if (best == v)
+      return v;
+    if (!std::isfinite(fromStart[best]))
+      return -1;
+    v = best;
+  }
 }
 
 /// Places the features `dropped` on the models of missing set `set`
@@ -258,11 +349,42 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     placedRemesh.triangles = triangles;
     onRemesh[i] = std::make_unique<ClosestPointQuery>(placedRemesh);
   }
+  // How far from each source's landmark of each dropped feature the climb
+  // of the edge-path distance from its kept landmarks stops (over the
+  // square root of its area): near 0 where it sits at a peak.
+  std::vector<std::vector<double>> fromPeak(
+    remeshed.size(), std::vector<double>(featureCount, std::numeric_limits<double>::infinity()));
+  auto heightOf = [&](int m, const EdgeGraph& graph) {
+    std::vector<int> kept;
+    for (int f : keptFeatures)
+      kept.push_back(landmarks[m][f]);
+    return edgeDistances(graph, kept, std::numeric_limits<double>::infinity());
+  };
+  if (options.climbToTips)
+    for (std::size_t i = 0; i < remeshed.size(); ++i)
+    {
+      const int c = remeshed[i];
+      if (setOf[c] == set)
+        continue;
+      const EdgeGraph graph = edgeGraph(*surfaces[c]);
+      const std::vector<double> height = heightOf(c, graph);
+      const double scale = std::sqrt(std::max(surfaceArea(*surfaces[c]), 1e-300));
+      const std::vector<Vec3>& points = surfaces[c]->points;
+      for (int f = 0; f < featureCount; ++f)
+        if (dropped[f] && landmarks[c][f] != kMissingLandmark)
+        {
+          const int from = landmarks[c][f];
+          const int peak = climb(graph, height, from, options.tipRadius * scale, std::numeric_limits<double>::infinity());
+          fromPeak[i][f] = (points[peak] - points[from]).norm() / scale;
+        }
+    }
   for (std::size_t target = 0; target < remeshed.size(); ++target)
   {
     const int m = remeshed[target];
     if (setOf[m] != set)
       continue;
+    std::unique_ptr<EdgeGraph> graph;
+    std::vector<double> height;
     // The sources whose remesh is most like the target's weigh most: their
     // maps are the likeliest to agree with the target's.
     std::vector<double> unlikeness(remeshed.size(), 0.0);
@@ -284,6 +406,7 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
         continue;
       std::vector<Vec3> carried;
       std::vector<double> weight;
+      std::vector<double> peakDistances;
       for (std::size_t i = 0; i < remeshed.size(); ++i)
       {
         const int c = remeshed[i];
@@ -301,6 +424,7 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
         {
           carried.push_back(p);
           weight.push_back(unlikeness[i]);
+          peakDistances.push_back(fromPeak[i][f]);
         }
       }
       if (carried.empty())
@@ -310,9 +434,32 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
       for (double& w : weight)
         w = std::exp(likest * likest - w * w);
       const ClosestPointQuery::Result onto = onSurface.closest(geometricMedian(carried, weight));
-      const int vertex = nearestFreeVertex(surface, onto.at.triangle, onto.point, taken);
+      int vertex = nearestFreeVertex(surface, onto.at.triangle, onto.point, taken);
       if (vertex < 0)
         continue;
+      // A feature that most sources have at a peak (a tip) goes to the peak
+      // the target's vertex climbs to, if it is near and the vertex is
+      // farther from it than the sources' landmarks typically are from
+      // theirs (hand-placed landmarks sit a little off the peak).
+      const int mappedVertex = vertex;
+      double climbed = 0.0;
+      std::nth_element(peakDistances.begin(), peakDistances.begin() + peakDistances.size() / 2, peakDistances.end());
+      const double offPeak = peakDistances[peakDistances.size() / 2];
+      if (options.climbToTips && offPeak <= options.tipTolerance)
+      {
+        if (!graph)
+        {
+          graph = std::make_unique<EdgeGraph>(edgeGraph(surface));
+          height = heightOf(m, *graph);
+        }
+        const int tip = climb(*graph, height, vertex, options.tipRadius * scale, options.tipReach * scale);
+        const double toTip = tip >= 0 ? (surface.points[tip] - surface.points[vertex]).norm() / scale : 0.0;
+        if (tip >= 0 && !taken[tip] && toTip > offPeak)
+        {
+          climbed = toTip;
+          vertex = tip;
+        }
+      }
       taken[vertex] = 1;
       std::vector<double> distances;
       for (const Vec3& p : carried)
@@ -322,9 +469,11 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
       placed.model = m;
       placed.feature = f;
       placed.vertex = vertex;
+      placed.mappedVertex = mappedVertex;
       placed.position = surface.points[vertex];
       placed.sources = static_cast<int>(carried.size());
       placed.spread = distances[distances.size() / 2];
+      placed.climbed = climbed;
       out.placed.push_back(placed);
     }
   }
@@ -354,6 +503,9 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
     return Status::error("the similarity width must be 0 or positive");
   if (options.maximumSources < 0)
     return Status::error("the most sources must be 0 (every model) or positive");
+  if (!(options.tipRadius > 0.0) || !(options.tipReach > 0.0) || !std::isfinite(options.tipRadius) ||
+    !std::isfinite(options.tipReach) || !(options.tipTolerance >= 0.0) || !std::isfinite(options.tipTolerance))
+    return Status::error("the tip radius and reach must be positive, the tip tolerance 0 or positive");
   if (modelCount == 0)
     return {};
   const int featureCount = static_cast<int>(landmarks[0].size());
