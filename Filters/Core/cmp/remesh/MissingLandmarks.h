@@ -158,9 +158,9 @@ struct MissingLandmarkReport
 ///      or a sphere with holes (`checkSurfaceWithBoundaries()`).
 /// Fails (Status), naming the problem, on options out of range (a level
 /// outside 1 to `kMaximumRemeshLevel`, negative relaxation rounds or
-/// similarity width, a tip radius or reach that is not positive), lists of different lengths or
-/// invalid (`validateLandmarks()` with missing features allowed), a
-/// missing feature that lies on some model's boundary, a
+/// similarity width, a tip radius or reach that is not positive, a negative
+/// tip tolerance), lists of different lengths or invalid
+/// (`validateLandmarks()` with missing features allowed), a missing feature that lies on some model's boundary, a
 /// feature missing on every model, fewer than 4 features left, no model
 /// with every feature (or a `baseDomainModel` that misses some), a reduced
 /// base domain that cannot be built, no model that has a missing feature
