@@ -6,6 +6,7 @@
 #include <cmp/map/Straighten.h>
 #include <cmp/layout/NetTracer.h>
 #include <cmp/layout/OpenSurface.h>
+#include <cmp/mesh/EdgePaths.h>
 #include <cmp/mesh/Subdivision.h>
 
 #include <gtest/gtest.h>
@@ -16,7 +17,6 @@
 #include <functional>
 #include <limits>
 #include <map>
-#include <queue>
 
 namespace cmp::test
 {
@@ -262,43 +262,6 @@ Status indexRealModels(
 namespace
 {
 
-/// Shortest edge-path distance from `source` to every vertex of `mesh`.
-std::vector<double> edgePathDistances(const TriangleMesh& mesh, int source, std::vector<int>* parent = nullptr)
-{
-  if (parent)
-    parent->assign(mesh.vertexCount(), -1);
-  std::vector<std::vector<int>> around(mesh.vertexCount());
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-    {
-      around[t[k]].push_back(t[(k + 1) % 3]);
-      around[t[(k + 1) % 3]].push_back(t[k]);
-    }
-  std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  distance[source] = 0.0;
-  queue.push({ 0.0, source });
-  while (!queue.empty())
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[v])
-      continue;
-    for (int w : around[v])
-    {
-      const double through = d + (mesh.points[v] - mesh.points[w]).norm();
-      if (through < distance[w])
-      {
-        distance[w] = through;
-        if (parent)
-          (*parent)[w] = v;
-        queue.push({ through, w });
-      }
-    }
-  }
-  return distance;
-}
 
 } // namespace
 
@@ -323,7 +286,9 @@ Status cutAroundFeature(const TriangleMesh& surface, const LandmarkList& landmar
   if (ring.size() != next.size() || !next.count(ring.back()))
     return Status::error("feature " + std::to_string(feature) + " lies on L0's boundary: no disk around it to cut");
   const int x = landmarks[feature];
-  const std::vector<double> fromX = edgePathDistances(surface, x);
+  const EdgeGraph graph = edgeGraph(surface);
+  std::vector<int> parent;
+  const std::vector<double> fromX = edgePathDistances(graph, { x }, std::numeric_limits<double>::infinity(), &parent);
   double nearest = std::numeric_limits<double>::infinity();
   for (int y : ring)
     nearest = std::min(nearest, fromX[landmarks[domain.featureIds[y]]]);
@@ -372,8 +337,6 @@ Status cutAroundFeature(const TriangleMesh& surface, const LandmarkList& landmar
     for (int v = 0; v < surface.vertexCount(); ++v)
       if (newIndex[v] == loop[i])
         onLoop[v] = static_cast<int>(i);
-  std::vector<int> parent;
-  edgePathDistances(surface, x, &parent);
   std::vector<int> boundary;
   std::vector<char> taken(loop.size(), 0);
   for (int y : ring)

@@ -2,14 +2,15 @@
 #include <cmp/io/MeshFile.h>
 #include <cmp/layout/NetTracer.h>
 #include <cmp/layout/LayoutValidator.h>
+#include <cmp/mesh/EdgePaths.h>
 #include "TestMeshes.h"
 #include "TestShapes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 
 using namespace cmp;
 
@@ -176,43 +177,10 @@ namespace
 /// marked in `blocked` (the ends may be), or empty.
 std::vector<int> meshPath(const TriangleMesh& mesh, int from, int to, const std::vector<char>& blocked)
 {
-  std::vector<std::vector<int>> next(mesh.vertexCount());
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      next[t[k]].push_back(t[(k + 1) % 3]);
-  std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
-  std::vector<int> parent(mesh.vertexCount(), -1);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  distance[from] = 0.0;
-  queue.push({ 0.0, from });
-  while (!queue.empty())
-  {
-    const auto [d, x] = queue.top();
-    queue.pop();
-    if (d > distance[x] || x == to)
-      continue;
-    if (x != from && blocked[x])
-      continue;
-    for (int y : next[x])
-    {
-      const double dy = d + (mesh.points[x] - mesh.points[y]).norm();
-      if (dy < distance[y] && (y == to || !blocked[y]))
-      {
-        distance[y] = dy;
-        parent[y] = x;
-        queue.push({ dy, y });
-      }
-    }
-  }
-  std::vector<int> path;
-  if (parent[to] < 0)
-    return path;
-  for (int v = to; v != from; v = parent[v])
-    path.push_back(v);
-  path.push_back(from);
-  std::reverse(path.begin(), path.end());
-  return path;
+  std::vector<int> parent;
+  const std::vector<double> distance =
+    edgePathDistances(edgeGraph(mesh), { from }, std::numeric_limits<double>::infinity(), &parent, &blocked);
+  return edgePath(parent, distance, to);
 }
 
 /// The curve of the base edge between features (= base vertices) `a` and

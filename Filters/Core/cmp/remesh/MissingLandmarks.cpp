@@ -4,6 +4,7 @@
 #include <cmp/layout/NetTracer.h>
 #include <cmp/layout/OpenSurface.h>
 #include <cmp/mesh/BoundaryLoops.h>
+#include <cmp/mesh/EdgePaths.h>
 #include <cmp/mesh/SurfaceDistance.h>
 #include <cmp/numerics/Threads.h>
 #include <cmp/remesh/Remesh.h>
@@ -17,7 +18,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <queue>
 #include <utility>
 
 namespace cmp
@@ -112,90 +112,27 @@ int nearestFreeVertex(const TriangleMesh& mesh, int near, const Vec3& p, const s
   return best;
 }
 
-/// The edges of a mesh as adjacency lists with their lengths.
-struct EdgeGraph
-{
-  std::vector<int> first; ///< Per vertex, where its arcs start in `to` (one more entry at the end).
-  std::vector<int> to;
-  std::vector<double> length;
-};
-
-EdgeGraph edgeGraph(const TriangleMesh& mesh)
-{
-  std::vector<std::pair<int, int>> arcs;
-  arcs.reserve(6 * mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-    {
-      arcs.emplace_back(t[k], t[(k + 1) % 3]);
-      arcs.emplace_back(t[(k + 1) % 3], t[k]);
-    }
-  std::sort(arcs.begin(), arcs.end());
-  arcs.erase(std::unique(arcs.begin(), arcs.end()), arcs.end());
-  EdgeGraph graph;
-  graph.first.assign(mesh.vertexCount() + 1, 0);
-  for (const auto& [a, b] : arcs)
-  {
-    ++graph.first[a + 1];
-    graph.to.push_back(b);
-    graph.length.push_back((mesh.points[a] - mesh.points[b]).norm());
-  }
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    graph.first[v + 1] += graph.first[v];
-  return graph;
-}
-
-/// Edge-path distances from `sources` (0 there), infinite beyond `limit`.
-std::vector<double> edgeDistances(const EdgeGraph& graph, const std::vector<int>& sources, double limit)
-{
-  const double infinity = std::numeric_limits<double>::infinity();
-  std::vector<double> distance(graph.first.size() - 1, infinity);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for (int v : sources)
-  {
-    distance[v] = 0.0;
-    queue.emplace(0.0, v);
-  }
-  while (!queue.empty())
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[v])
-      continue;
-    for (int k = graph.first[v]; k < graph.first[v + 1]; ++k)
-    {
-      const double next = d + graph.length[k];
-      const int u = graph.to[k];
-      if (next < distance[u] && next <= limit)
-      {
-        distance[u] = next;
-        queue.emplace(next, u);
-      }
-    }
-  }
-  return distance;
-}
-
 /// Climbs `height` from `from`: to the highest vertex within edge-path
 /// distance `step` of the current one while that one is higher. Returns the
 /// vertex where the climb stops (a peak at the scale of `step`), or -1 if
 /// it would go farther than `reach` from `from`.
 int climb(const EdgeGraph& graph, const std::vector<double>& height, int from, double step, double reach)
 {
-  const std::vector<double> fromStart = edgeDistances(graph, { from }, reach);
+  // Only a finite reach needs the distances from the start.
+  const std::vector<double> fromStart =
+    std::isfinite(reach) ? edgePathDistances(graph, { from }, reach) : std::vector<double>{};
   int v = from;
   // The height rises at every move, so the climb ends.
   for (;;)
   {
-    const std::vector<double> ball = edgeDistances(graph, { v }, step);
+    const std::vector<double> ball = edgePathDistances(graph, { v }, step);
     int best = v;
     for (std::size_t u = 0; u < ball.size(); ++u)
       if (std::isfinite(ball[u]) && height[u] > height[best])
         best = static_cast<int>(u);
     if (best == v)
       return v;
-    if (!std::isfinite(fromStart[best]))
+    if (!fromStart.empty() && !std::isfinite(fromStart[best]))
       return -1;
     v = best;
   }
@@ -358,7 +295,7 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     std::vector<int> kept;
     for (int f : keptFeatures)
       kept.push_back(landmarks[m][f]);
-    return edgeDistances(graph, kept, std::numeric_limits<double>::infinity());
+    return edgePathDistances(graph, kept);
   };
   if (options.climbToTips)
     for (std::size_t i = 0; i < remeshed.size(); ++i)
