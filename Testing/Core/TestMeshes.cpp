@@ -191,10 +191,11 @@ BaseDomain realBaseDomain(const std::string& name)
   return domain;
 }
 
-Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out)
+Status parameterizeOnDomain(
+  const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out, const NetTracerOptions& tracing)
 {
   TracedNet traced;
-  if (Status s = traceFeatureNet(model.data.mesh, model.landmarks, domain, traced); !s.ok())
+  if (Status s = traceFeatureNet(model.data.mesh, model.landmarks, domain, traced, tracing); !s.ok())
     return Status::error(model.name + ": tracing: " + s.message());
   StraightenOptions options;
   options.freeCurves = false; // the straightened curves, as the paper leaves them

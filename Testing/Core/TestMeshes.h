@@ -6,6 +6,7 @@
 #include <cmp/basedomain/BaseDomain.h>
 #include <cmp/io/Landmarks.h>
 #include <cmp/io/MeshFile.h>
+#include <cmp/layout/NetTracer.h>
 #include <cmp/layout/PatchLayout.h>
 #include <cmp/map/PatchParameterization.h>
 #include <cmp/remesh/SemiRegularRemesher.h>
@@ -106,8 +107,10 @@ struct ParameterizedModel
   PatchParameterization parameterization; ///< Its per-patch map.
 };
 
-/// \brief Traces, straightens and parameterizes `model` on `domain`.
-Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out);
+/// \brief Traces (with `tracing`), straightens and parameterizes `model`
+///        on `domain`, the curves fixed as the paper leaves them.
+Status parameterizeOnDomain(const LandmarkedModel& model, const BaseDomain& domain, ParameterizedModel& out,
+  const NetTracerOptions& tracing = {});
 
 /// \brief The octahedron as a base domain, its vertices the features in order.
 BaseDomain orderedOctahedronDomain();

@@ -356,6 +356,60 @@ TEST(NetTracer, EveryRealModelWithL0From381AndFromSpot)
   }
 }
 
+/// With L0 built from 383, requeueing a curve the swirl detector flags
+/// forces it in, its postponements spent, into the net it swirled in, and
+/// 381's net detours round it (40.4 per square root of area, 18.8 on its
+/// own L0). The tracer's second trace, postponed curves waiting for the net
+/// to change round them, must be kept where it is shorter, and every
+/// model's net must stay near its length on its own L0.
+TEST(NetTracer, PostponedCurvesWaitForTheNetWhereThatIsShorter)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const std::vector<test::LandmarkedModel> models = test::landmarkedRealModels();
+  ASSERT_GE(models.size(), 11u);
+  const auto named = [&](const std::string& name)
+  {
+    const auto it = std::find_if(models.begin(), models.end(), [&](const test::LandmarkedModel& m) { return m.name == name; });
+    EXPECT_NE(it, models.end()) << name;
+    return it;
+  };
+  const auto source = named("383");
+  ASSERT_NE(source, models.end());
+  BaseDomain domain;
+  ASSERT_TRUE(buildBaseDomain(source->data.mesh, source->landmarks, domain).ok());
+  bool someWaited = false;
+  for (const test::LandmarkedModel& model : models)
+  {
+    BaseDomain own;
+    ASSERT_TRUE(buildBaseDomain(model.data.mesh, model.landmarks, own).ok()) << model.name;
+    const NetTracerReport onOwn = expectValidNet(model.data.mesh, model.landmarks, own, model.name + " on its own L0");
+    const NetTracerReport report =
+      expectValidNet(model.data.mesh, model.landmarks, domain, model.name + " with L0 from 383");
+    std::cout << model.name << ": net on L0 from 383 / on its own " << report.netLength / onOwn.netLength
+              << (report.waited ? " (waited" : " (requeued") << ", other net " << report.alternativeNetLength / onOwn.netLength
+              << ")\n";
+    EXPECT_LT(report.netLength, 1.3 * onOwn.netLength) << model.name;
+    if (report.alternativeNetLength > 0.0)
+      EXPECT_LE(report.netLength, report.alternativeNetLength) << model.name;
+    someWaited = someWaited || report.waited;
+  }
+  EXPECT_TRUE(someWaited);
+
+  // Without the second trace, 381's net is the detour.
+  const auto mistraced = named("381");
+  ASSERT_NE(mistraced, models.end());
+  NetTracerOptions requeueOnly;
+  requeueOnly.retraceWaiting = false;
+  const NetTracerReport requeued =
+    expectValidNet(mistraced->data.mesh, mistraced->landmarks, domain, "381 with L0 from 383, requeued", requeueOnly);
+  const NetTracerReport kept = expectValidNet(mistraced->data.mesh, mistraced->landmarks, domain, "381 with L0 from 383");
+  EXPECT_FALSE(requeued.waited);
+  EXPECT_EQ(requeued.alternativeNetLength, 0.0);
+  EXPECT_TRUE(kept.waited);
+  EXPECT_NEAR(kept.alternativeNetLength, requeued.netLength, 1e-9 * requeued.netLength);
+  EXPECT_LT(kept.netLength, 0.6 * requeued.netLength);
+}
+
 /// Whether one of `problems` contains `text`; prints them if not.
 bool mentions(const std::vector<std::string>& problems, const std::string& text)
 {

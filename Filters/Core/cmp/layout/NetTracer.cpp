@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -151,14 +152,23 @@ public:
     base_.build(domain);
   }
 
-  Status run(const TriangleMesh& surface, const LandmarkList& landmarks)
+  /// Traces the net. `coordinates` holds the harmonic parameterization of
+  /// `surface`, or is empty (`featureCount` 0) and then gets it; the tracer works
+  /// on a copy, which grows as edges are split. With `waiting`, a curve the
+  /// swirl detector postpones waits until the net changes round it (see
+  /// `NetTracerOptions::retraceWaiting`); without, it is requeued at a
+  /// penalised priority, at most `maxPenalties` times.
+  Status run(const TriangleMesh& surface, const LandmarkList& landmarks, FeatureCoordinates& coordinates, bool waiting)
   {
+    waiting_ = waiting;
     if (Status s = net_.mesh.build(surface); !s.ok())
       return s;
     if (Status s = checkPresetCurves(landmarks); !s.ok())
       return s;
-    if (Status s = computeFeatureCoordinates(surface, landmarks, coordinates_, options_.featureCoordinates); !s.ok())
-      return s;
+    if (coordinates.featureCount == 0)
+      if (Status s = computeFeatureCoordinates(surface, landmarks, coordinates, options_.featureCoordinates); !s.ok())
+        return s;
+    coordinates_ = coordinates;
     const int baseVertices = domain_.mesh.vertexCount();
     net_.landmarkVertex.resize(baseVertices);
     featureOf_.resize(baseVertices);
@@ -316,8 +326,24 @@ private:
       }
     }
     std::vector<int> deferred;
-    while (!queue.empty())
+    // Curves the swirl detector postponed while waiting_: each waits until a
+    // curve at a corner of its two base triangles is in (which of the
+    // swirled configurations is fair shows only once more curves join those
+    // landmarks; a curve elsewhere changes nothing the detector sees). When
+    // only postponed curves are left, the cheapest goes in unchecked. Every
+    // return to the queue follows an insertion, so the loop ends.
+    std::vector<Candidate> postponed;
+    while (!queue.empty() || !postponed.empty())
     {
+      bool forced = false;
+      if (queue.empty())
+      {
+        const auto cheapest = std::min_element(postponed.begin(), postponed.end(),
+          [](const Candidate& x, const Candidate& y) { return x.priority < y.priority; });
+        queue.push(*cheapest);
+        postponed.erase(cheapest);
+        forced = true;
+      }
       const Candidate candidate = queue.top();
       queue.pop();
       const int e = candidate.edge;
@@ -335,15 +361,37 @@ private:
         queue.push({ curveLength(net_.mesh, tentative_[e]), e });
         continue;
       }
-      if (options_.detectSwirls && penalties_[e] < options_.maxPenalties && swirls(e))
+      const bool spent = !waiting_ && penalties_[e] >= options_.maxPenalties;
+      if (options_.detectSwirls && !forced && !spent && swirls(e))
       {
         ++penalties_[e];
         ++report_.penalised;
-        queue.push({ candidate.priority * options_.penaltyFactor, e });
+        const Candidate later{ candidate.priority * options_.penaltyFactor, e };
+        if (waiting_)
+          postponed.push_back(later);
+        else
+          queue.push(later);
         continue;
       }
+      // Checked once more only where the answer is used: whether the net
+      // may need the second trace.
+      if (options_.detectSwirls && (forced || spent) && options_.retraceWaiting && swirls(e))
+        ++report_.forcedSwirls;
       insert(e);
       ++inserted;
+      for (std::size_t i = 0; i < postponed.size();)
+      {
+        const std::array<int, 4> corners = cornersOf(postponed[i].edge);
+        if (std::find(corners.begin(), corners.end(), a) != corners.end() ||
+          std::find(corners.begin(), corners.end(), b) != corners.end())
+        {
+          queue.push(postponed[i]);
+          postponed[i] = postponed.back();
+          postponed.pop_back();
+        }
+        else
+          ++i;
+      }
       if (options_.progress)
         options_.progress(static_cast<double>(inserted) / edgeCount);
       if (treeEdges < treeSize)
@@ -463,6 +511,14 @@ private:
     return inSector(base_.edges[e][0], path[1]) && inSector(base_.edges[e][1], path[path.size() - 2]);
   }
 
+  /// The four base vertices of the two base triangles beside edge `e`.
+  std::array<int, 4> cornersOf(int e) const
+  {
+    const int a = base_.edges[e][0], b = base_.edges[e][1];
+    return { a, b, thirdVertex(domain_.mesh.triangles[base_.left[e]], a, b),
+      thirdVertex(domain_.mesh.triangles[base_.right[e]], a, b) };
+  }
+
   /// The paper's swirl detector: from the third vertex of each base triangle
   /// beside the edge, the closest point of the tentative curve must be
   /// reached from that triangle's side.
@@ -567,6 +623,7 @@ private:
   std::vector<int> penalties_;
   std::vector<int> presetEdge_; // base edge of each preset curve
   BrushFire fire_;
+  bool waiting_ = false; // postponed curves wait for the net to change round them
 };
 
 } // namespace
@@ -584,8 +641,31 @@ Status traceFeatureNet(const TriangleMesh& surface, const LandmarkList& landmark
   NetTracerReport& out = report ? *report : localReport;
   out = NetTracerReport{};
   net = TracedNet{};
-  Tracer tracer(domain, options, net, out);
-  return tracer.run(surface, landmarks);
+  FeatureCoordinates coordinates;
+  if (Status s = Tracer(domain, options, net, out).run(surface, landmarks, coordinates, false); !s.ok())
+    return s;
+  if (!options.retraceWaiting || !options.detectSwirls || out.forcedSwirls == 0)
+    return {};
+  // Both nets are valid; the paper's greedy tracing aims at the shortest
+  // net, so the shorter one is kept.
+  // Progress was reported to the end already; the second trace is quiet.
+  NetTracerOptions waiting = options;
+  waiting.progress = nullptr;
+  TracedNet waitingNet;
+  NetTracerReport waitingReport;
+  const Status waited = Tracer(domain, waiting, waitingNet, waitingReport).run(surface, landmarks, coordinates, true);
+  const int traces = out.traces + waitingReport.traces;
+  if (waited.ok() && waitingReport.netLength < out.netLength)
+  {
+    waitingReport.alternativeNetLength = out.netLength;
+    waitingReport.waited = true;
+    net = std::move(waitingNet);
+    out = waitingReport;
+  }
+  else
+    out.alternativeNetLength = waited.ok() ? waitingReport.netLength : 0.0;
+  out.traces = traces;
+  return {};
 }
 
 } // namespace cmp
