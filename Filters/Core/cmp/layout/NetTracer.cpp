@@ -373,8 +373,9 @@ private:
           queue.push(later);
         continue;
       }
-      // Checked once more only where the answer is used: whether the net
-      // may need the second trace.
+      // Checked once more for the report's forcedSwirls, which in the first
+      // trace decides whether the net is traced again (only forced or spent
+      // curves, a few per net).
       if (options_.detectSwirls && (forced || spent) && options_.retraceWaiting && swirls(e))
         ++report_.forcedSwirls;
       insert(e);
