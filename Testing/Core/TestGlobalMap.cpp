@@ -119,6 +119,87 @@ TEST(GlobalMap, LowersTheDistortionOfARealModelsMapAndKeepsItsLandmarks)
   }
 }
 
+TEST(GlobalMap, AStartWhoseFirstStepsAreHeldBackIsStillOptimized)
+{
+  // L0 from 383 with a 22nd vertex at its tail tip (file vertex 3), put in
+  // the base triangle whose patch holds the tip on 383, and Spot with that
+  // landmark at its rump (file vertex 254, where the Missing Landmark
+  // Placer put it): Spot's map starts crushed, and its first Newton step
+  // could go only 7e-5 of its way before a triangle flattened. It gained
+  // 9e-5 of the energy, and the map stopped there as if it had settled
+  // (distortion 88 after one step; 669 remesh folds before repair).
+  CMP_REQUIRE_SHARED_DATA();
+  const test::LandmarkedModel source = test::landmarkedRealModel("383");
+  BaseDomain built;
+  ASSERT_TRUE(buildBaseDomain(source.data.mesh, source.landmarks, built).ok());
+  TracedNet sourceNet;
+  ASSERT_TRUE(traceFeatureNet(source.data.mesh, source.landmarks, built, sourceNet).ok());
+  const int tip = source.data.fileToMeshPoint[3];
+  int holding = -1;
+  for (int t = 0; t < sourceNet.mesh.triangleCount(); ++t)
+  {
+    const Triangle& tri = sourceNet.mesh.triangle(t);
+    if (std::find(tri.begin(), tri.end(), tip) != tri.end() &&
+      (holding < 0 || sourceNet.patchOfTriangle[t] < holding))
+      holding = sourceNet.patchOfTriangle[t];
+  }
+  ASSERT_GE(holding, 0);
+  // Vertex i is feature i; the holding triangle split in three round the tip.
+  const int features = built.mesh.vertexCount();
+  BaseDomain domain;
+  domain.mesh.points.resize(features + 1);
+  for (int v = 0; v < features; ++v)
+    domain.mesh.points[built.featureIds[v]] = built.mesh.points[v];
+  domain.mesh.points[features] = source.data.mesh.points[tip];
+  for (int t = 0; t < built.mesh.triangleCount(); ++t)
+  {
+    Triangle tri = built.mesh.triangles[t];
+    for (int& v : tri)
+      v = built.featureIds[v];
+    if (t != holding)
+      domain.mesh.triangles.push_back(tri);
+  }
+  {
+    Triangle tri = built.mesh.triangles[holding];
+    for (int& v : tri)
+      v = built.featureIds[v];
+    for (int k = 0; k < 3; ++k)
+      domain.mesh.triangles.push_back({ tri[k], tri[(k + 1) % 3], features });
+  }
+  for (int f = 0; f <= features; ++f)
+    domain.featureIds.push_back(f);
+  ASSERT_TRUE(checkBaseDomain(domain, features + 1).ok());
+
+  test::LandmarkedModel model = test::landmarkedRealModel("spot");
+  model.landmarks.push_back(model.data.fileToMeshPoint[254]);
+  TracedNet traced;
+  ASSERT_TRUE(traceFeatureNet(model.data.mesh, model.landmarks, domain, traced).ok());
+  StraightenedNet straight;
+  ASSERT_TRUE(straightenNet(traced, domain, straight).ok());
+  PatchParameterization start, result;
+  ASSERT_TRUE(parameterizePatches(straight.net, domain, start).ok());
+  GlobalMapReport report;
+  const Status status = optimizeGlobalMap(straight.net, domain, start, result, {}, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  ASSERT_GT(report.distortionBefore, 20.0) << "the start is no longer crushed: this test checks nothing";
+  // Held back at first, the steps then gain more and more.
+  EXPECT_GT(report.iterations, 20);
+  EXPECT_LT(report.distortionAfter, 3.0);
+
+  // The map after that one step: its image had 3 pieces between 1 and 3
+  // times the snapping distance high on the far side of their curve (a
+  // corner snapped onto a curve is up to that distance off it, so such a
+  // piece's centre can fall either side). The cut failed on them and the
+  // curves stayed straightened.
+  GlobalMapOptions oneStep;
+  oneStep.maximumIterations = 1;
+  StraightenedNet cut;
+  PatchParameterization cutMap;
+  FreeCurvesReport freed;
+  ASSERT_TRUE(freeCurves(straight, domain, start, oneStep, cut, cutMap, &freed).ok());
+  EXPECT_TRUE(freed.applied) << freed.reason;
+}
+
 TEST(GlobalMap, DrawnWithL0sOwnShapesEachPatchTakesItsShareOfTheSurface)
 {
   // TargetShapes BaseDomain draws each base triangle with L0's own shape

@@ -27,8 +27,10 @@ struct GlobalMapOptions
 {
   /// \brief Newton steps at most.
   int maximumIterations = 100;
-  /// \brief A step that lowers the energy by less than this fraction ends
-  ///        the optimization.
+  /// \brief A full Newton step that lowers the energy by less than this
+  ///        fraction ends the optimization (a step held back by a triangle
+  ///        about to flatten does not: a crushed start gains little per step
+  ///        at first).
   double leastRelativeGain = 1e-4;
   /// \brief Near the landmarks the map is asked to be closer to isometric:
   ///        each triangle's energy is multiplied by 1 + min(cap, (R / r)^2),
