@@ -1,0 +1,257 @@
+#include <cmp/layout/ProtrusionCones.h>
+
+#include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/layout/NetTracer.h>
+#include <cmp/mesh/EdgePaths.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+
+namespace cmp
+{
+
+namespace
+{
+
+Status checkOptions(const ProtrusionConeOptions& o)
+{
+  const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (!positive(o.leastDepth) || !positive(o.peakRadius) || !positive(o.ballRadius) ||
+    !positive(o.largestBallShare))
+    return Status::error("protrusion cones: leastDepth, peakRadius, ballRadius and largestBallShare must be "
+                         "positive and finite");
+  if (o.leastModels < 1)
+    return Status::error("protrusion cones: leastModels must be at least 1, not " + std::to_string(o.leastModels));
+  return {};
+}
+
+/// Per vertex, a third of the area of its triangles.
+std::vector<double> vertexAreas(const TriangleMesh& surface)
+{
+  std::vector<double> area(surface.points.size(), 0.0);
+  for (int t = 0; t < surface.triangleCount(); ++t)
+    for (int v : surface.triangles[t])
+      area[v] += triangleArea(surface, t) / 3.0;
+  return area;
+}
+
+} // namespace
+
+Status findProtrusions(const TriangleMesh& surface, const LandmarkList& landmarks,
+  std::vector<Protrusion>& protrusions, const ProtrusionConeOptions& options)
+{
+  protrusions.clear();
+  if (Status s = checkOptions(options); !s.ok())
+    return s;
+  if (surface.vertexCount() == 0 || surface.triangleCount() == 0)
+    return Status::error("protrusion cones: the surface is empty");
+  if (landmarks.empty())
+    return Status::error("protrusion cones: there are no landmarks");
+  if (Status s = validateLandmarks(landmarks, surface.vertexCount()); !s.ok())
+    return Status::error("protrusion cones: " + s.message());
+  const double unit = std::sqrt(surfaceArea(surface));
+  if (!(unit > 0.0))
+    return Status::error("protrusion cones: the surface has no area");
+  const EdgeGraph graph = edgeGraph(surface);
+  const int n = graph.vertexCount();
+  std::vector<int> parent;
+  const std::vector<double> depth = edgePathDistances(graph, landmarks, std::numeric_limits<double>::infinity(), &parent);
+  // The landmark each vertex is nearest to: the start of its shortest path.
+  std::vector<int> root(n, -1);
+  for (int v = 0; v < n; ++v)
+  {
+    int u = v;
+    std::vector<int> path;
+    while (root[u] < 0 && parent[u] >= 0)
+    {
+      path.push_back(u);
+      u = parent[u];
+    }
+    const int r = root[u] >= 0 ? root[u] : (parent[u] < 0 && std::isfinite(depth[u]) ? u : -1);
+    root[u] = r;
+    for (int w : path)
+      root[w] = r;
+  }
+  std::map<int, int> featureOf;
+  for (std::size_t f = 0; f < landmarks.size(); ++f)
+    featureOf[landmarks[f]] = static_cast<int>(f);
+  const std::vector<double> area = vertexAreas(surface);
+
+  // Local maxima of the distance from the landmarks, deepest first.
+  std::vector<int> candidates;
+  for (int v = 0; v < n; ++v)
+  {
+    if (!std::isfinite(depth[v]) || depth[v] < options.leastDepth * unit)
+      continue;
+    bool highest = true;
+    for (int a = graph.first[v]; a < graph.first[v + 1] && highest; ++a)
+      highest = depth[graph.to[a]] <= depth[v];
+    if (highest)
+      candidates.push_back(v);
+  }
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return depth[a] > depth[b]; });
+  std::vector<char> taken(n, 0); // within the peak radius of a tip kept
+  const double disk = kPi * std::pow(options.ballRadius * unit, 2);
+  for (int v : candidates)
+  {
+    if (taken[v])
+      continue;
+    const std::vector<double> near = edgePathDistances(graph, { v }, options.peakRadius * unit);
+    bool peak = true;
+    for (int u = 0; u < n && peak; ++u)
+      peak = !std::isfinite(near[u]) || depth[u] <= depth[v];
+    if (!peak)
+      continue;
+    for (int u = 0; u < n; ++u)
+      if (std::isfinite(near[u]))
+        taken[u] = 1;
+    const std::vector<double> ball = edgePathDistances(graph, { v }, options.ballRadius * unit);
+    double inside = 0.0;
+    for (int u = 0; u < n; ++u)
+      if (std::isfinite(ball[u]))
+        inside += area[u];
+    const double share = inside / disk;
+    if (share >= options.largestBallShare || root[v] < 0)
+      continue;
+    protrusions.push_back({ v, featureOf[root[v]], depth[v] / unit, share });
+  }
+  return {};
+}
+
+Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  int baseDomainModel, BaseDomain& domain, const ProtrusionConeOptions& options, ProtrusionConeReport* report)
+{
+  ProtrusionConeReport local;
+  ProtrusionConeReport& out = report ? *report : local;
+  out = ProtrusionConeReport{};
+  if (Status s = checkOptions(options); !s.ok())
+    return s;
+  const int models = static_cast<int>(surfaces.size());
+  if (landmarks.size() != surfaces.size())
+    return Status::error("protrusion cones: " + std::to_string(landmarks.size()) + " landmark lists for " +
+      std::to_string(models) + " surfaces");
+  if (baseDomainModel < 0 || baseDomainModel >= models)
+    return Status::error("protrusion cones: there is no model " + std::to_string(baseDomainModel));
+  const std::size_t features = landmarks[baseDomainModel].size();
+  for (int m = 0; m < models; ++m)
+  {
+    if (!surfaces[m])
+      return Status::error("protrusion cones: model " + std::to_string(m) + " has no surface");
+    if (landmarks[m].size() != features)
+      return Status::error("protrusion cones: model " + std::to_string(m) + " has " +
+        std::to_string(landmarks[m].size()) + " features, model " + std::to_string(baseDomainModel) + " " +
+        std::to_string(features));
+    if (Status s = validateLandmarks(landmarks[m], surfaces[m]->vertexCount(), -1, true); !s.ok())
+      return Status::error("protrusion cones: model " + std::to_string(m) + ": " + s.message());
+  }
+  if (missingLandmarkCount(landmarks[baseDomainModel]) > 0)
+    return Status::error("protrusion cones: model " + std::to_string(baseDomainModel) +
+      ", which L0 is built from, misses landmarks");
+
+  BaseDomain built;
+  if (Status s = buildBaseDomain(*surfaces[baseDomainModel], landmarks[baseDomainModel], built); !s.ok())
+    return s;
+
+  // Per model, the tip nearest to each feature where it has exactly one.
+  out.protrusions.assign(models, {});
+  std::vector<std::map<int, int>> tipOf(models);
+  std::map<int, int> modelsWith;
+  for (int m = 0; m < models; ++m)
+  {
+    if (missingLandmarkCount(landmarks[m]) > 0)
+      continue;
+    if (Status s = findProtrusions(*surfaces[m], landmarks[m], out.protrusions[m], options); !s.ok())
+      return Status::error("model " + std::to_string(m) + ": " + s.message());
+    std::map<int, int> count;
+    for (const Protrusion& p : out.protrusions[m])
+      ++count[p.nearestFeature];
+    for (const Protrusion& p : out.protrusions[m])
+      if (count[p.nearestFeature] == 1)
+      {
+        tipOf[m][p.nearestFeature] = p.vertex;
+        ++modelsWith[p.nearestFeature];
+      }
+  }
+
+  // Each cone's base triangle: where its tip lies on the L0 model, or on
+  // the first model that has it, traced over L0.
+  struct Cone
+  {
+    int root, model, triangle, count;
+  };
+  std::vector<Cone> cones;
+  std::map<int, TracedNet> nets;
+  for (const auto& [root, count] : modelsWith)
+  {
+    if (count < options.leastModels)
+      continue;
+    int model = tipOf[baseDomainModel].count(root) ? baseDomainModel : -1;
+    for (int m = 0; m < models && model < 0; ++m)
+      if (tipOf[m].count(root))
+        model = m;
+    if (!nets.count(model))
+    {
+      if (Status s = traceFeatureNet(*surfaces[model], landmarks[model], built, nets[model]); !s.ok())
+        return Status::error("protrusion cones: model " + std::to_string(model) + ": " + s.message());
+    }
+    const TracedNet& net = nets[model];
+    const int tip = tipOf[model][root];
+    int triangle = -1;
+    for (int t = 0; t < net.mesh.triangleCount(); ++t)
+    {
+      const Triangle& tri = net.mesh.triangle(t);
+      if (std::find(tri.begin(), tri.end(), tip) != tri.end() &&
+        (triangle < 0 || net.patchOfTriangle[t] < triangle))
+        triangle = net.patchOfTriangle[t];
+    }
+    if (triangle < 0)
+      continue; // not expected: every input vertex keeps its triangles' patches
+    cones.push_back({ root, model, triangle, count });
+  }
+  // One cone per base triangle: the one more models have.
+  std::sort(cones.begin(), cones.end(), [](const Cone& a, const Cone& b) {
+    return a.count != b.count ? a.count > b.count : a.root < b.root;
+  });
+  std::vector<Cone> kept;
+  for (const Cone& c : cones)
+    if (std::none_of(kept.begin(), kept.end(), [&](const Cone& k) { return k.triangle == c.triangle; }))
+      kept.push_back(c);
+  std::sort(kept.begin(), kept.end(), [](const Cone& a, const Cone& b) { return a.root < b.root; });
+
+  domain = built;
+  for (const Cone& c : kept)
+  {
+    const int vertex = domain.mesh.vertexCount();
+    domain.mesh.points.push_back(surfaces[c.model]->points[tipOf[c.model][c.root]]);
+    domain.featureIds.push_back(static_cast<int>(features + out.roots.size()));
+    out.roots.push_back(c.root);
+    out.tipModels.push_back(c.model);
+    out.splitTriangles.push_back(c.triangle);
+    const Triangle tri = built.mesh.triangles[c.triangle];
+    for (int k = 0; k < 3; ++k)
+      domain.mesh.triangles.push_back({ tri[k], tri[(k + 1) % 3], vertex });
+  }
+  // The split triangles go (in the order of the others, the new ones last).
+  std::vector<Triangle> triangles;
+  for (int t = 0; t < built.mesh.triangleCount(); ++t)
+    if (std::none_of(kept.begin(), kept.end(), [&](const Cone& k) { return k.triangle == t; }))
+      triangles.push_back(built.mesh.triangles[t]);
+  triangles.insert(triangles.end(), domain.mesh.triangles.begin() + built.mesh.triangleCount(),
+    domain.mesh.triangles.end());
+  domain.mesh.triangles = std::move(triangles);
+  if (Status s = checkBaseDomain(domain, static_cast<int>(features + kept.size())); !s.ok())
+    return Status::error("protrusion cones: internal error: " + s.message());
+
+  for (int m = 0; m < models; ++m)
+    for (const Cone& c : kept)
+    {
+      const auto found = tipOf[m].find(c.root);
+      landmarks[m].push_back(found != tipOf[m].end() ? found->second : kMissingLandmark);
+    }
+  return {};
+}
+
+} // namespace cmp

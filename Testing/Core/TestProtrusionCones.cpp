@@ -1,0 +1,130 @@
+#include <cmp/basedomain/BaseDomain.h>
+#include <cmp/layout/ProtrusionCones.h>
+#include "TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+using namespace cmp;
+
+namespace
+{
+
+/// The base vertices joined to base vertex `v`, as features.
+std::set<int> neighbourFeatures(const BaseDomain& domain, int v)
+{
+  std::set<int> result;
+  for (const Triangle& t : domain.mesh.triangles)
+    if (std::find(t.begin(), t.end(), v) != t.end())
+      for (int u : t)
+        if (u != v)
+          result.insert(domain.featureIds[u]);
+  return result;
+}
+
+} // namespace
+
+TEST(ProtrusionCones, FindTheTailsOfTheFourLeggedModelsThatHaveOne)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  // 383's tail tip is vertex 3 of its file; 382 and 387 have no tail.
+  const test::LandmarkedModel tailed = test::landmarkedRealModel("383");
+  std::vector<Protrusion> found;
+  ASSERT_TRUE(findProtrusions(tailed.data.mesh, tailed.landmarks, found).ok());
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].nearestFeature, 13); // the tail's root
+  const double unit = std::sqrt(surfaceArea(tailed.data.mesh));
+  EXPECT_LT((tailed.data.mesh.points[found[0].vertex] - tailed.data.mesh.points[tailed.data.fileToMeshPoint[3]]).norm(),
+    0.02 * unit);
+  EXPECT_GT(found[0].depth, 0.15);
+  EXPECT_LT(found[0].ballShare, 0.2);
+  for (const char* name : { "382", "387" })
+  {
+    const test::LandmarkedModel model = test::landmarkedRealModel(name);
+    ASSERT_TRUE(findProtrusions(model.data.mesh, model.landmarks, found).ok());
+    EXPECT_TRUE(std::none_of(found.begin(), found.end(), [](const Protrusion& p) { return p.nearestFeature == 13; }))
+      << name;
+  }
+}
+
+TEST(ProtrusionCones, ATailTheCollectionSharesGetsAConeInTheBaseTriangleHoldingItsTip)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  const std::vector<test::LandmarkedModel> models = test::landmarkedRealModels();
+  ASSERT_GE(models.size(), 11u);
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+  for (const test::LandmarkedModel& model : models)
+  {
+    surfaces.push_back(&model.data.mesh);
+    landmarks.push_back(model.landmarks);
+  }
+  const int from = static_cast<int>(
+    std::find_if(models.begin(), models.end(), [](const auto& m) { return m.name == "381"; }) - models.begin());
+  BaseDomain domain;
+  ProtrusionConeReport report;
+  const Status status = addProtrusionCones(surfaces, landmarks, from, domain, {}, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  // One cone, at the tail (root 13), on the models with a long thin tail;
+  // placed later on the others. 381 has none: the tip of the first model
+  // that has one (383) chose the base triangle.
+  ASSERT_EQ(report.roots, std::vector<int>{ 13 });
+  std::set<std::string> with;
+  for (std::size_t m = 0; m < models.size(); ++m)
+  {
+    ASSERT_EQ(landmarks[m].size(), 22u);
+    if (landmarks[m][21] != kMissingLandmark)
+      with.insert(models[m].name);
+  }
+  EXPECT_EQ(with, (std::set<std::string>{ "383", "385", "388", "389", "392" }));
+  EXPECT_EQ(models[report.tipModels[0]].name, "383");
+  ASSERT_TRUE(checkBaseDomain(domain, 22).ok());
+  EXPECT_EQ(domain.mesh.triangleCount(), 40);
+  const int cone = static_cast<int>(std::find(domain.featureIds.begin(), domain.featureIds.end(), 21) -
+    domain.featureIds.begin());
+  // A thin fan up the tail to the landmarks round its root.
+  EXPECT_EQ(neighbourFeatures(domain, cone), (std::set<int>{ 12, 13, 14 }));
+
+  // Fewer than leastModels models with the tail: no cone.
+  ProtrusionConeOptions many;
+  many.leastModels = 6;
+  std::vector<LandmarkList> unchanged;
+  for (const test::LandmarkedModel& model : models)
+    unchanged.push_back(model.landmarks);
+  ASSERT_TRUE(addProtrusionCones(surfaces, unchanged, from, domain, many, &report).ok());
+  EXPECT_TRUE(report.roots.empty());
+  EXPECT_EQ(domain.mesh.vertexCount(), 21);
+  EXPECT_EQ(unchanged[0].size(), 21u);
+}
+
+TEST(ProtrusionCones, RefuseOptionsAndCollectionsThatDoNotFit)
+{
+  const TriangleMesh sphere = test::sphere(2);
+  const LandmarkList landmarks{ 0, 1, 2, 3 };
+  std::vector<Protrusion> found;
+  ProtrusionConeOptions bad;
+  bad.ballRadius = 0.0;
+  EXPECT_FALSE(findProtrusions(sphere, landmarks, found, bad).ok());
+  bad = {};
+  bad.leastModels = 0;
+  EXPECT_FALSE(findProtrusions(sphere, landmarks, found, bad).ok());
+  EXPECT_FALSE(findProtrusions(sphere, { 0, kMissingLandmark }, found).ok());
+  EXPECT_FALSE(findProtrusions(TriangleMesh{}, landmarks, found).ok());
+  // A sphere has no protrusion.
+  ASSERT_TRUE(findProtrusions(sphere, landmarks, found).ok());
+  EXPECT_TRUE(found.empty());
+
+  std::vector<const TriangleMesh*> surfaces{ &sphere, &sphere };
+  std::vector<LandmarkList> lists{ landmarks, { 0, 1, 2 } };
+  BaseDomain domain;
+  EXPECT_FALSE(addProtrusionCones(surfaces, lists, 0, domain).ok()); // 4 and 3 features
+  lists = { landmarks };
+  EXPECT_FALSE(addProtrusionCones(surfaces, lists, 0, domain).ok()); // one list for two surfaces
+  lists = { landmarks, landmarks };
+  EXPECT_FALSE(addProtrusionCones(surfaces, lists, 2, domain).ok()); // no model 2
+  lists = { { 0, 1, 2, kMissingLandmark }, landmarks };
+  EXPECT_FALSE(addProtrusionCones(surfaces, lists, 0, domain).ok()); // L0's model misses one
+}
