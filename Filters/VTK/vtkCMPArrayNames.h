@@ -34,6 +34,16 @@ constexpr const char* kPlacedFeatureSpreadArray = "PlacedFeatureSpread";
 ///        where the maps carried it to the tip its sources have it at, over
 ///        sqrt(area) (0: it did not climb).
 constexpr const char* kPlacedFeatureClimbArray = "PlacedFeatureClimb";
+/// \brief Field int array of the base domain Protrusion Cones builds: per
+///        cone (features F, F + 1, ...), the feature whose landmark is its
+///        root.
+constexpr const char* kProtrusionConeRootsArray = "ProtrusionConeRoots";
+/// \brief Field int array: the tips of the landmark-free protrusions
+///        Protrusion Cones found on a surface.
+constexpr const char* kProtrusionTipsArray = "ProtrusionTips";
+/// \brief Field int array: per tip of `ProtrusionTips`, the feature whose
+///        landmark is nearest to it.
+constexpr const char* kProtrusionRootsArray = "ProtrusionRoots";
 /// \brief Field array mapping a file's point ids to welded ids.
 constexpr const char* kFileToMeshPointArray = "FileToMeshPointId";
 /// \brief One-value field string array naming the file a surface was read

@@ -30,6 +30,25 @@ vtkSmartPointer<vtkDataObjectTreeIterator> leavesOf(vtkMultiBlockDataSet* blocks
 
 } // namespace
 
+Status toLandmarkedCollection(const SurfaceCollection& collection, bool withBoundaries, LandmarkedCollection& out)
+{
+  out = LandmarkedCollection{};
+  const std::size_t count = collection.surfaces.size();
+  out.landmarks.resize(count);
+  for (std::size_t m = 0; m < count; ++m)
+  {
+    out.meshes.push_back(std::make_unique<TriangleMesh>());
+    const Status read = withBoundaries ? toCheckedSurfaceWithBoundaries(collection.surfaces[m], *out.meshes[m])
+                                       : toCheckedSurface(collection.surfaces[m], *out.meshes[m]);
+    if (!read.ok())
+      return Status::error(collection.labels[m] + read.message());
+    if (Status s = readLandmarks(collection.surfaces[m], out.landmarks[m], true); !s.ok())
+      return Status::error(collection.labels[m] + s.message());
+    out.surfaces.push_back(out.meshes[m].get());
+  }
+  return {};
+}
+
 Status collectSurfaces(vtkDataObject* input, SurfaceCollection& out, bool allowEmpty)
 {
   out = SurfaceCollection{};

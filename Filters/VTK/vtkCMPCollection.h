@@ -4,10 +4,13 @@
 ///        leaves of a vtkMultiBlockDataSet, and an output of the same shape;
 ///        shared by the filters that take collections (private header).
 
+#include <cmp/io/Landmarks.h>
 #include <cmp/mesh/Status.h>
+#include <cmp/mesh/TriangleMesh.h>
 
 #include <vtkSmartPointer.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +39,21 @@ struct SurfaceCollection
 ///        `allowEmpty`, a multiblock without leaves is accepted (a rank of a
 ///        parallel run may hold none).
 Status collectSurfaces(vtkDataObject* input, SurfaceCollection& out, bool allowEmpty = false);
+
+/// \brief The surfaces of a collection as the core takes them: each
+///        checked (closed, or with boundary loops given `withBoundaries`)
+///        and its landmarks (`FeatureId`, missing features allowed).
+struct LandmarkedCollection
+{
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  std::vector<const TriangleMesh*> surfaces; ///< The meshes, for the core's entries.
+  std::vector<LandmarkList> landmarks;
+};
+
+/// \brief Reads `collection`'s surfaces and landmarks. Fails (Status, the
+///        message led by the surface's label) on the first surface or
+///        landmark list that does not fit.
+Status toLandmarkedCollection(const SurfaceCollection& collection, bool withBoundaries, LandmarkedCollection& out);
 
 /// \brief Makes output `port` of an algorithm the same kind of object as
 ///        `input` (vtkMultiBlockDataSet or vtkPolyData). For RequestDataObject.

@@ -16,7 +16,6 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include <memory>
 
 vtkStandardNewMacro(vtkCMPMissingLandmarkPlacer);
 
@@ -56,18 +55,11 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
   if (cmp::Status s = cmp::bridge::collectSurfaces(input, collection); !s.ok())
     return fail(s.message());
   const std::size_t count = collection.surfaces.size();
-  std::vector<std::unique_ptr<cmp::TriangleMesh>> meshes;
-  std::vector<const cmp::TriangleMesh*> surfaces;
-  std::vector<cmp::LandmarkList> landmarks(count);
-  for (std::size_t m = 0; m < count; ++m)
-  {
-    meshes.push_back(std::make_unique<cmp::TriangleMesh>());
-    if (cmp::Status s = cmp::bridge::toCheckedSurfaceWithBoundaries(collection.surfaces[m], *meshes[m]); !s.ok())
-      return fail(collection.labels[m] + s.message());
-    if (cmp::Status s = cmp::bridge::readLandmarks(collection.surfaces[m], landmarks[m], true); !s.ok())
-      return fail(collection.labels[m] + s.message());
-    surfaces.push_back(meshes[m].get());
-  }
+  cmp::bridge::LandmarkedCollection read;
+  if (cmp::Status s = cmp::bridge::toLandmarkedCollection(collection, true, read); !s.ok())
+    return fail(s.message());
+  const std::vector<const cmp::TriangleMesh*>& surfaces = read.surfaces;
+  std::vector<cmp::LandmarkList>& landmarks = read.landmarks;
   // Without FeatureCount a model that misses the last features has fewer:
   // it has as many as the one with most. With it, the counts must agree.
   std::size_t featureCount = 0;

@@ -3,7 +3,8 @@ Landmarks From File leaves them off FeatureId and says how many features
 the file has, Check Inputs accepts them with AllowMissingLandmarks and
 names them without, Base Domain Builder refuses such a model, the landmark
 writer writes them back as missing, and Missing Landmark Placer places them
-from the models of the collection that have them, marking what it placed.
+from the models of the collection that have them, marking what it placed;
+Protrusion Cones then finds no protrusion to give a cone on them.
 On the shipped examples (6 landmarks each): blob misses feature 2 (.vts),
 peanut its last feature (.csv, nan,nan,nan), capsule has all.
 
@@ -122,6 +123,23 @@ def main():
     # A complete model passes through as it was.
     capsule_before = feature_ids(servermanager.Fetch(capsule))
     check_equal(feature_ids(placed.GetBlock(1)), capsule_before, "the capsule's landmarks")
+
+    # Protrusion Cones on the completed collection: the examples have no
+    # long landmark-free protrusion, so L0 (output 1) keeps their 6
+    # landmarks and the surfaces (output 0) keep theirs.
+    cones = names["ProtrusionCones"](Input=placer)
+    with ErrorCapture(cones.GetClientSideObject()) as errors:
+        cones.UpdatePipeline()
+    check_equal(errors.text, "", "Protrusion Cones on the examples")
+    cone_surfaces = servermanager.Fetch(cones, idx=0)
+    cone_domain = servermanager.Fetch(cones, idx=1)
+    check_equal(cone_domain.GetNumberOfPoints(), 6, "Protrusion Cones' L0 points")
+    check_equal(cone_domain.GetFieldData().GetArray("ProtrusionConeRoots").GetNumberOfTuples(), 0, "cones")
+    for block in range(3):
+        check_equal(sorted(feature_ids(cone_surfaces.GetBlock(block))), list(range(6)),
+                    "block %d's features after Protrusion Cones" % block)
+        check(cone_surfaces.GetBlock(block).GetFieldData().GetArray("ProtrusionTips") is not None,
+              "block %d has ProtrusionTips" % block)
 
     # No model with every feature: the placer says so.
     lonely = names["MissingLandmarkPlacer"](Input=simple.GroupDatasets(Input=[blob, peanut]))
