@@ -68,7 +68,10 @@ from .ranks import default_jobs, this_job
 from .collection_stages import run_collection_stages
 from .stages import (
     Model,
+    apply_cone_landmarks,
     build_base_domain,
+    find_protrusion_cones,
+    is_closed,
     check_against_base_domain,
     apply_placed_landmarks,
     load_base_domain,
@@ -121,8 +124,9 @@ def main(argv=None):
         if error is not None:
             mine[position][1].fail(error)
 
-    _place_missing_landmarks(args, models, mine, ranks, report)
-    domain = _base_domain(args, models, ranks, report)
+    cones = _protrusion_cones(args, models, mine, ranks, report)
+    _place_missing_landmarks(args, models, mine, ranks, report, cones)
+    domain = _base_domain(args, models, ranks, report, cones)
 
     def processing(index, model):
         step = "[%d/%d] %s:" % (index + 1, len(models), model.name)
@@ -249,7 +253,81 @@ def _prepare(args, report):
     return None
 
 
-def _place_missing_landmarks(args, models, mine, ranks, report):
+def _all_surfaces(models, order):
+    """The models at `order`, each with its surface: those another rank
+    read are read here too (in a child process of rank 0)."""
+    for index in order:
+        if models[index].surface is None:
+            read_landmarked_surface(models[index])
+    return [models[index] for index in order]
+
+
+def _protrusion_cones(args, models, mine, ranks, report):
+    """When L0 is built from a model (--protrusion-cones, the default), finds
+    the landmark-free protrusions the collection shares (Protrusion Cones, in
+    a child process on rank 0) and gives each a cone: a landmark after the
+    files' features at its tip on the models that have it, missing on the
+    others (placed next, from the models that have it), and a vertex of L0.
+    Returns L0 with the cones as text, or None when there are none (not
+    asked, a given L0, files that miss landmarks, a surface with a boundary,
+    fewer than two models, or no protrusion shared). Every rank learns the
+    result; a failure is said and the run goes on without cones."""
+    if args.base_domain is not None or not args.protrusion_cones:
+        return None
+    gathered = ranks.all_gather([(index, bool(model.report.get("missing_landmarks")), is_closed(model.surface))
+                                 for index, model in mine if model.surface is not None])
+    readable = {index: (misses, closed) for part in gathered for index, misses, closed in part}
+    if (len(readable) < 2 or args.base_domain_from not in readable or
+            any(misses or not closed for misses, closed in readable.values())):
+        return None
+    order = sorted(readable)
+    result = None
+    start = time.perf_counter()
+    if ranks.rank == 0:
+        def find():
+            return find_protrusion_cones(_all_surfaces(models, order), order.index(args.base_domain_from))
+        try:
+            result = run_in_child("cones", "collection", find, "finding protrusions", args.model_timeout)
+        except StageError as error:
+            result = str(error)
+    result = ranks.broadcast(result)
+    seconds = round(time.perf_counter() - start, 4)
+    if isinstance(result, str):
+        report["protrusion_cones"] = {"error": result, "seconds": seconds}
+        if ranks.rank == 0:
+            print("no protrusion cones: %s" % result, flush=True)
+        return None
+    first, roots, tips, found, domain = result
+    report["protrusion_cones"] = {
+        "cones": [{"feature": first + i, "root": root,
+                   "models": [models[index].name for position, index in enumerate(order) if tips[position][i] >= 0]}
+                  for i, root in enumerate(roots)],
+        "seconds": seconds}
+    for position, index in enumerate(order):
+        model = models[index]
+        if roots:
+            model.cones = tips[position]  # a model read again (on rank 0 under MPI) gets them too
+        if model.surface is None:
+            continue
+        model.report["protrusions"] = [{"vertex": vertex, "nearest_landmark": nearest}
+                                       for vertex, nearest in found[position]]
+        if roots:
+            missing = apply_cone_landmarks(model, tips[position])
+            model.report["cone_landmarks"] = {str(first + i): vertex for i, vertex in enumerate(tips[position])
+                                              if vertex >= 0}
+            if missing:
+                model.missing = missing
+                model.report["missing_landmarks"] = missing
+    if ranks.rank == 0:
+        for i, root in enumerate(roots):
+            having = [models[index].name for position, index in enumerate(order) if tips[position][i] >= 0]
+            print("protrusion cone: feature %d at the tip of the landmark-free protrusion nearest to landmark %d "
+                  "(found on %s%s)" % (first + i, root, ", ".join(having),
+                                       "; placed on the others" if len(having) < len(order) else ""), flush=True)
+    return domain if roots else None
+
+
+def _place_missing_landmarks(args, models, mine, ranks, report, cones=None):
     """Places the landmarks some models' files mark missing (-1) from the
     models that have them (Missing Landmark Placer, in a child process on
     rank 0), so that every model gets the full base domain. A model whose
@@ -266,7 +344,7 @@ def _place_missing_landmarks(args, models, mine, ranks, report):
     for index in sorted(missing):
         models[index].missing = missing[index]
     complete = [index for index in sorted(readable) if index not in missing]
-    if args.base_domain is None and args.base_domain_from in missing and complete:
+    if args.base_domain is None and cones is None and args.base_domain_from in missing and complete:
         report["base_domain_from"] = {"asked": models[args.base_domain_from].name,
                                       "reason": "it misses landmarks %s" % ", ".join(
                                           map(str, missing[args.base_domain_from])),
@@ -281,12 +359,9 @@ def _place_missing_landmarks(args, models, mine, ranks, report):
     start = time.perf_counter()
     if ranks.rank == 0:
         def place():
-            for index in order:
-                if models[index].surface is None:  # read by another rank
-                    read_landmarked_surface(models[index])
             source = order.index(args.base_domain_from) if args.base_domain is None and \
                 args.base_domain_from in complete else -1
-            return place_missing_landmarks([models[index] for index in order], source)
+            return place_missing_landmarks(_all_surfaces(models, order), source)
         print("placing %d missing landmark%s on %d model%s from the others"
               % (sum(map(len, missing.values())), "" if sum(map(len, missing.values())) == 1 else "s",
                  len(missing), "" if len(missing) == 1 else "s"), flush=True)
@@ -328,10 +403,21 @@ def _place_missing_landmarks(args, models, mine, ranks, report):
                 print("  %s: FAILED: %s" % (model.name, error), flush=True)
 
 
-def _base_domain(args, models, ranks, report):
+def _base_domain(args, models, ranks, report, cones=None):
     """Reads (rank 0) or builds (the rank of --base-domain-from's model) the
-    base domain, writes base_domain.vtp and fills report["base_domain"], on
-    every rank: the base domain, or None if it could not be had."""
+    base domain, or takes the one Protrusion Cones built (`cones`, text),
+    writes base_domain.vtp and fills report["base_domain"], on every rank:
+    the base domain, or None if it could not be had."""
+    if cones is not None:
+        domain = polydata_from_text(cones)
+        source = "built from %s, with protrusion cones" % models[args.base_domain_from].name
+        if ranks.rank == 0:
+            print("base domain from %s, with %d protrusion cone%s" % (
+                models[args.base_domain_from].name, len(report["protrusion_cones"]["cones"]),
+                "" if len(report["protrusion_cones"]["cones"]) == 1 else "s"), flush=True)
+            write_polydata(domain, os.path.join(args.output, "base_domain.vtp"))
+        report["base_domain"] = describe_base_domain(domain, source)
+        return domain
     if args.base_domain is not None:
         root = 0
     else:

@@ -18,6 +18,7 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 from . import CMPFilters as cmp
 from . import array_names
+from .isolation import polydata_to_text
 from .figures import field_reader, folds_near_landmark, landmark_count, significant, table_column
 from .summary import weights_text
 from .vtkio import StageError, run, write_multiblock, write_polydata, write_table
@@ -46,6 +47,9 @@ class Model:
         # where the collection placed them ({feature: vertex}).
         self.missing = []
         self.placed = {}
+        # The protrusion cones' tip vertices after the file's features (-1:
+        # missing here), once the collection gave it some.
+        self.cones = []
         self.report = {"mesh": mesh_path, "landmarks": landmark_path, "seconds": {}}
 
     def without_own_name(self, message):
@@ -86,6 +90,8 @@ def read_landmarked_surface(model):
     model.surface = model.timed("check", run, check)
     model.report["landmark_count"] = landmark_count(model.surface)
     model.missing = missing_features(model.surface)
+    if model.cones:
+        model.missing = model.missing + apply_cone_landmarks(model, model.cones)
     if model.missing:
         model.report["missing_landmarks"] = model.missing
     if model.placed:
@@ -103,6 +109,16 @@ def missing_features(surface):
     return [f for f in range(int(count.GetTuple1(0))) if f not in present]
 
 
+def collection_blocks(models):
+    """The surfaces of `models` as a multiblock, one block per model, named
+    after it: the input of the filters that take a whole collection."""
+    blocks = vtkMultiBlockDataSet()
+    for index, model in enumerate(models):
+        blocks.SetBlock(index, model.surface)
+        blocks.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), model.name)
+    return blocks
+
+
 def place_missing_landmarks(models, base_domain_model):
     """Missing Landmark Placer on the surfaces of `models` (a multiblock, one
     block per model): for each model, the list of what was placed on it,
@@ -110,12 +126,8 @@ def place_missing_landmarks(models, base_domain_model):
     "climbed_per_sqrt_area"}, and the message
     of a model whose features could not be placed (None if they were).
     Raises StageError if the filter fails."""
-    blocks = vtkMultiBlockDataSet()
-    for index, model in enumerate(models):
-        blocks.SetBlock(index, model.surface)
-        blocks.GetMetaData(index).Set(vtkCompositeDataSet.NAME(), model.name)
     placer = cmp.vtkCMPMissingLandmarkPlacer()
-    placer.SetInputData(blocks)
+    placer.SetInputData(collection_blocks(models))
     placer.SetBaseDomainModel(base_domain_model)
     placed = run(placer)
     results = []
@@ -139,6 +151,74 @@ def place_missing_landmarks(models, base_domain_model):
         results.append((entries, "feature%s %s could not be placed" % ("" if len(left) == 1 else "s",
                                                                       ", ".join(map(str, left))) if left else None))
     return results
+
+
+def is_closed(surface):
+    """Whether every edge of the triangles of `surface` joins exactly two
+    of them."""
+    cells = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    edges = numpy.sort(numpy.concatenate([cells[:, [0, 1]], cells[:, [1, 2]], cells[:, [2, 0]]]), axis=1)
+    _, counts = numpy.unique(edges, axis=0, return_counts=True)
+    return bool(len(counts)) and bool(numpy.all(counts == 2))
+
+
+def find_protrusion_cones(models, base_domain_model):
+    """Protrusion Cones on the surfaces of `models` (a multiblock, one block
+    per model), L0 from model `base_domain_model`: (first, roots, tips,
+    found, domain): first the files' feature count F, roots the feature
+    nearest to each cone's tip (cone i is feature F + i), tips per model the
+    cones' tip vertices (-1 where the model has none), found per model every
+    protrusion as [vertex, nearest feature], and domain L0 with the cones as
+    text (isolation.polydata_to_text).
+    Raises StageError if the filter fails."""
+    cones = cmp.vtkCMPProtrusionCones()
+    cones.SetInputData(collection_blocks(models))
+    cones.SetBaseDomainModel(base_domain_model)
+    surfaces = run(cones)
+    domain = cones.GetOutputDataObject(1)
+    roots_array = domain.GetFieldData().GetArray(array_names.PROTRUSION_CONE_ROOTS_ARRAY)
+    roots = [int(roots_array.GetTuple1(i)) for i in range(roots_array.GetNumberOfTuples())]
+    tips, found, first = [], [], 0
+    for index in range(len(models)):
+        surface = surfaces.GetBlock(index)
+        ids = vtk_to_numpy(surface.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY))
+        count = int(surface.GetFieldData().GetArray(array_names.FEATURE_COUNT_ARRAY).GetTuple1(0))
+        first = count - len(roots)
+        tips.append([int(numpy.flatnonzero(ids == first + i)[0]) if numpy.any(ids == first + i) else -1
+                     for i in range(len(roots))])
+        field = surface.GetFieldData()
+        vertices = field.GetArray(array_names.PROTRUSION_TIPS_ARRAY)
+        nearest = field.GetArray(array_names.PROTRUSION_ROOTS_ARRAY)
+        found.append([[int(vertices.GetTuple1(i)), int(nearest.GetTuple1(i))]
+                      for i in range(vertices.GetNumberOfTuples())])
+    return first, roots, tips, found, polydata_to_text(domain)
+
+
+def apply_cone_landmarks(model, tips):
+    """Gives `model`'s surface the cones after its file's features: feature
+    F + i at vertex tips[i], or missing where it is -1 (FeatureCount grows
+    by the cones either way); returns the cones' missing features."""
+    ids = model.surface.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY)
+    count = model.surface.GetFieldData().GetArray(array_names.FEATURE_COUNT_ARRAY)
+    first = int(count.GetTuple1(0))
+    marked = vtkIntArray()
+    marked.DeepCopy(ids)
+    for i, vertex in enumerate(tips):
+        if vertex >= 0:
+            marked.SetValue(vertex, first + i)
+    surface = vtkPolyData()
+    surface.ShallowCopy(model.surface)
+    surface.GetPointData().AddArray(marked)
+    counted = vtkIntArray()
+    counted.SetName(array_names.FEATURE_COUNT_ARRAY)
+    counted.InsertNextValue(first + len(tips))
+    field = type(model.surface.GetFieldData())()
+    field.ShallowCopy(model.surface.GetFieldData())
+    field.AddArray(counted)
+    surface.SetFieldData(field)
+    model.surface = surface
+    model.report["landmark_count"] = landmark_count(surface)
+    return [first + i for i, vertex in enumerate(tips) if vertex < 0]
 
 
 def mark_placed_landmarks(remesh, placed):

@@ -195,7 +195,7 @@ def write_vtp(path, points, triangles, feature_ids):
     return path
 
 
-def check_models_ok(report, pairs, what):
+def check_models_ok(report, pairs, what, landmark_count=21):
     check_equal(sorted(report["models"]), sorted(os.path.splitext(os.path.basename(m))[0] for m, _ in pairs),
                 what + ": models in the report")
     check_equal(report["failed"], [], what + ": failed models")
@@ -210,7 +210,7 @@ def check_models_ok(report, pairs, what):
             vertices, triangles = len(obj_points(mesh)), 5856
         check_equal(model["vertices"], vertices, "%s: vertices of %s" % (what, name))
         check_equal(model["triangles"], triangles, "%s: triangles of %s" % (what, name))
-        check_equal(model["landmark_count"], 21, "%s: landmark_count of %s" % (what, name))
+        check_equal(model["landmark_count"], landmark_count, "%s: landmark_count of %s" % (what, name))
         check_equal(model["mesh"], mesh, "%s: mesh of %s" % (what, name))
         check_equal(model["landmarks"], landmarks, "%s: landmarks of %s" % (what, name))
 
@@ -439,9 +439,11 @@ def case_collection(tmp):
     check_equal(len(pairs), 11, "models in the collection")
     out = os.path.join(tmp, "out")
     names = [os.path.splitext(os.path.basename(m))[0] for m, _ in pairs]
-    # One run for every stage: (1, 0, ...) must give Spot back.
+    # One run for every stage: (1, 0, ...) must give Spot back. L0 keeps the
+    # files' 21 landmarks, which the checks below count on: the tails' cones
+    # have their own case (protrusion-cones).
     applications = ["--pca", "3", "--blend", "--blend-weights", ",".join(["1"] + ["0"] * (len(pairs) - 1)),
-                    "--details-from", "381"]
+                    "--details-from", "381", "--no-protrusion-cones"]
     status, stdout, stderr, report = run_cli(
         model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3", "--transfer-from", "spot"] + applications,
         out, display=None if PICTURES else "")
@@ -1858,6 +1860,60 @@ def case_missing_landmarks(tmp):
         check_contains(report["models"][name].get("error", ""), "no model has every feature", name + "'s error")
 
 
+def case_protrusion_cones(tmp):
+    """Beyond the paper: 383 and 385 have a long landmark-free tail, 381 has
+    none. With L0 built from 381 the command finds the tails, gives them a
+    cone (feature 21, rooted at landmark 13) at their tips, places it on
+    381 and builds L0 with it (22 vertices, the tail tip's base triangle
+    split in three), and every model is remeshed with the 22 landmarks; the
+    tails' tips come nearer than with --no-protrusion-cones."""
+    import numpy
+    names = ["381", "383", "385"]
+    pairs = [(shrec(name, "off"), shrec(name, "vts")) for name in names]
+    runs = {}
+    for cones in (True, False):
+        out = os.path.join(tmp, "out-cones" if cones else "out-plain")
+        flags = [] if cones else ["--no-protrusion-cones"]
+        status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3",
+                                                                         "--no-render"] + flags, out)
+        check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout, stderr))
+        check_models_ok(report, pairs, "protrusion cones" if cones else "no protrusion cones", 22 if cones else 21)
+        runs[cones] = (out, stdout, report)
+    out, stdout, report = runs[True]
+    check_equal(report["protrusion_cones"]["cones"], [{"feature": 21, "root": 13, "models": ["383", "385"]}],
+                "the cones")
+    check_contains(stdout, "protrusion cone: feature 21 at the tip of the landmark-free protrusion nearest to "
+                   "landmark 13 (found on 383, 385; placed on the others)", "stdout")
+    check_contains(stdout, "base domain from 381, with 1 protrusion cone", "stdout")
+    domain = report["base_domain"]
+    check_equal((domain.get("vertices"), domain.get("triangles"), domain.get("edges")), (22, 40, 60),
+                "base domain with the cone")
+    check_equal(domain.get("source"), "built from 381, with protrusion cones", "base domain source")
+    check_base_domain(read_vtp(os.path.join(out, "base_domain.vtp")), None, 22, "base_domain.vtp")
+    check_equal(report["models"]["381"].get("missing_landmarks"), [21], "381 misses the cone")
+    check_equal([entry["feature"] for entry in report["models"]["381"].get("placed_landmarks", [])], [21],
+                "the cone placed on 381")
+    scale = math.sqrt(off_area(shrec("383", "off")))
+    points, _ = read_off(shrec("383", "off"))
+    cone = report["models"]["383"]["cone_landmarks"]["21"]
+    # 383's tail tip is vertex 3 of its file.
+    check(numpy.linalg.norm(numpy.array(points[cone]) - numpy.array(points[3])) < 0.02 * scale,
+          "383's cone at vertex %d, not at its tail tip" % cone)
+    check(any(entry["nearest_landmark"] == 13 for entry in report["models"]["385"]["protrusions"]),
+          "385's tail not among its protrusions")
+    check_remeshed(out, report, stdout, names, 3, landmarks=22)
+    plain_out, plain_stdout, plain = runs[False]
+    check("cones" not in plain.get("protrusion_cones", {}), "cones with --no-protrusion-cones")
+    check_equal(plain["base_domain"].get("vertices"), 21, "base domain without cones")
+    check_remeshed(plain_out, plain, plain_stdout, names, 3)
+    # The tails' tips: the remesh comes nearer to them with the cone.
+    for name in ("383", "385"):
+        with_cone = report["models"][name]["remesh"]["hausdorff_per_diagonal"]
+        without = plain["models"][name]["remesh"]["hausdorff_per_diagonal"]
+        print("%s: %.2f%% of the diagonal with the cone, %.2f%% without" % (name, 100 * with_cone, 100 * without))
+        check(with_cone < without, "%s: %.4f with the cone, %.4f without" % (name, with_cone, without))
+
+
 def read_off(path):
     """(points, triangles) of an OFF file of triangles."""
     with open(path) as f:
@@ -2026,6 +2082,7 @@ CASES = {
     "argument-errors": case_argument_errors,
     "base-domain-mismatch": case_base_domain_mismatch,
     "missing-landmarks": case_missing_landmarks,
+    "protrusion-cones": case_protrusion_cones,
     "faces-collection": case_faces_collection,
     "open-missing-landmarks": case_open_missing_landmarks,
 }
