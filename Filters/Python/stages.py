@@ -198,26 +198,13 @@ def apply_cone_landmarks(model, tips):
     """Gives `model`'s surface the cones after its file's features: feature
     F + i at vertex tips[i], or missing where it is -1 (FeatureCount grows
     by the cones either way); returns the cones' missing features."""
-    ids = model.surface.GetPointData().GetArray(array_names.FEATURE_ID_ARRAY)
-    count = model.surface.GetFieldData().GetArray(array_names.FEATURE_COUNT_ARRAY)
-    first = int(count.GetTuple1(0))
-    marked = vtkIntArray()
-    marked.DeepCopy(ids)
-    for i, vertex in enumerate(tips):
-        if vertex >= 0:
-            marked.SetValue(vertex, first + i)
-    surface = vtkPolyData()
-    surface.ShallowCopy(model.surface)
-    surface.GetPointData().AddArray(marked)
+    field = model.surface.GetFieldData()
+    first = int(field.GetArray(array_names.FEATURE_COUNT_ARRAY).GetTuple1(0))
     counted = vtkIntArray()
     counted.SetName(array_names.FEATURE_COUNT_ARRAY)
     counted.InsertNextValue(first + len(tips))
-    field = type(model.surface.GetFieldData())()
-    field.ShallowCopy(model.surface.GetFieldData())
     field.AddArray(counted)
-    surface.SetFieldData(field)
-    model.surface = surface
-    model.report["landmark_count"] = landmark_count(surface)
+    apply_placed_landmarks(model, {first + i: vertex for i, vertex in enumerate(tips) if vertex >= 0})
     return [first + i for i, vertex in enumerate(tips) if vertex < 0]
 
 

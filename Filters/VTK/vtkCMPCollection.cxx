@@ -3,6 +3,8 @@
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkCompositeDataSet.h>
+
+#include <algorithm>
 #include <vtkDataObjectTreeIterator.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -45,6 +47,20 @@ Status toLandmarkedCollection(const SurfaceCollection& collection, bool withBoun
     if (Status s = readLandmarks(collection.surfaces[m], out.landmarks[m], true); !s.ok())
       return Status::error(collection.labels[m] + s.message());
     out.surfaces.push_back(out.meshes[m].get());
+  }
+  // Without FeatureCount a model that misses the last features has fewer:
+  // it has as many as the one with most. With it, the counts must agree.
+  std::size_t featureCount = 0;
+  for (const LandmarkList& list : out.landmarks)
+    featureCount = std::max(featureCount, list.size());
+  for (std::size_t m = 0; m < count; ++m)
+  {
+    if (out.landmarks[m].size() == featureCount)
+      continue;
+    if (featureCountOf(collection.surfaces[m]) >= 0)
+      return Status::error(collection.labels[m] + "its landmark file has " + std::to_string(out.landmarks[m].size()) +
+        " features but another model's has " + std::to_string(featureCount));
+    out.landmarks[m].resize(featureCount, kMissingLandmark);
   }
   return {};
 }

@@ -50,9 +50,12 @@ struct LandmarkedCollection
   std::vector<LandmarkList> landmarks;
 };
 
-/// \brief Reads `collection`'s surfaces and landmarks. Fails (Status, the
-///        message led by the surface's label) on the first surface or
-///        landmark list that does not fit.
+/// \brief Reads `collection`'s surfaces and landmarks, every list as long
+///        as the longest (a file without `FeatureCount` that misses its last
+///        features has fewer: they are missing). Fails (Status, the message
+///        led by the surface's label) on the first surface or landmark list
+///        that does not fit, and when a file's `FeatureCount` differs from
+///        another's.
 Status toLandmarkedCollection(const SurfaceCollection& collection, bool withBoundaries, LandmarkedCollection& out);
 
 /// \brief Makes output `port` of an algorithm the same kind of object as

@@ -60,21 +60,6 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
     return fail(s.message());
   const std::vector<const cmp::TriangleMesh*>& surfaces = read.surfaces;
   std::vector<cmp::LandmarkList>& landmarks = read.landmarks;
-  // Without FeatureCount a model that misses the last features has fewer:
-  // it has as many as the one with most. With it, the counts must agree.
-  std::size_t featureCount = 0;
-  for (const cmp::LandmarkList& list : landmarks)
-    featureCount = std::max(featureCount, list.size());
-  for (std::size_t m = 0; m < count; ++m)
-  {
-    if (landmarks[m].size() == featureCount)
-      continue;
-    if (cmp::bridge::featureCountOf(collection.surfaces[m]) >= 0)
-      return fail(collection.labels[m] + "its landmark file has " + std::to_string(landmarks[m].size()) +
-        " features but another model's has " + std::to_string(featureCount));
-    landmarks[m].resize(featureCount, cmp::kMissingLandmark);
-  }
-
   cmp::MissingLandmarkOptions options;
   options.baseDomainModel = this->BaseDomainModel;
   options.level = this->Level;

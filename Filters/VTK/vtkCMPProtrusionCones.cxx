@@ -67,14 +67,6 @@ int vtkCMPProtrusionCones::RequestData(
   if (this->BaseDomainModel < 0 || this->BaseDomainModel >= static_cast<int>(count))
     return fail("BaseDomainModel is " + std::to_string(this->BaseDomainModel) + ", but the input has " +
       std::to_string(count) + " surfaces");
-  // A model whose file misses its last features has fewer: as many as the
-  // one with most.
-  std::size_t featureCount = 0;
-  for (const cmp::LandmarkList& list : landmarks)
-    featureCount = std::max(featureCount, list.size());
-  for (cmp::LandmarkList& list : landmarks)
-    list.resize(featureCount, cmp::kMissingLandmark);
-
   cmp::ProtrusionConeOptions options;
   options.leastModels = this->LeastModels;
   options.largestBallShare = this->LargestBallShare;
