@@ -69,9 +69,10 @@ def parse_arguments(argv):
                         "ears and horns get room fixed curves deny them; --no-free-curves keeps the paper's "
                         "straightened curves, several times faster but far from such parts")
     parser.add_argument("--protrusion-cones", action=argparse.BooleanOptionalAction, default=True,
-                        help="when L0 is built from a model: give each landmark-free protrusion the collection "
-                        "shares (a tail on at least two models) a cone, an extra landmark at its tip and vertex of "
-                        "L0, placed from the others on models without it (Protrusion Cones, on by default): the map "
+                        help="give each landmark-free protrusion the collection shares (a tail on at least two "
+                        "models) a cone, an extra landmark at its tip and vertex of L0, placed from the others on "
+                        "models without it (Protrusion Cones, on by default; a given --base-domain gets the cone "
+                        "by splitting its triangle that holds the tip, keeping the others): the map "
                         "then reaches the tips instead of squeezing the tails into a base triangle, where the remesh "
                         "folds; --no-protrusion-cones keeps L0 to the files' landmarks")
     parser.add_argument("--free-curves-max-triangles", type=int, metavar="N",

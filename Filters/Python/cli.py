@@ -263,21 +263,23 @@ def _all_surfaces(models, order):
 
 
 def _protrusion_cones(args, models, mine, ranks, report):
-    """When L0 is built from a model (--protrusion-cones, the default), finds
-    the landmark-free protrusions the collection shares (Protrusion Cones, in
-    a child process on rank 0) and gives each a cone: a landmark after the
-    files' features at its tip on the models that have it, missing on the
-    others (placed next, from the models that have it), and a vertex of L0.
-    Returns L0 with the cones as text, or None when there are none (not
-    asked, a given L0, files that miss landmarks, a surface with a boundary,
-    fewer than two models, or no protrusion shared). Every rank learns the
-    result; a failure is said and the run goes on without cones."""
-    if args.base_domain is not None or not args.protrusion_cones:
+    """With --protrusion-cones (the default), finds the landmark-free
+    protrusions the collection shares (Protrusion Cones, in a child process
+    on rank 0) and gives each a cone: a landmark after the files' features
+    at its tip on the models that have it, missing on the others (placed
+    next, from the models that have it), and a vertex of L0, built from
+    --base-domain-from's model or the given --base-domain (whose triangle
+    holding the tip is split). Returns L0 with the cones as text, or None
+    when there are none (not asked, files that miss landmarks, a surface
+    with a boundary, fewer than two models, or no protrusion shared). Every
+    rank learns the result; a failure is said and the run goes on without
+    cones."""
+    if not args.protrusion_cones:
         return None
     gathered = ranks.all_gather([(index, bool(model.report.get("missing_landmarks")), is_closed(model.surface))
                                  for index, model in mine if model.surface is not None])
     readable = {index: (misses, closed) for part in gathered for index, misses, closed in part}
-    if (len(readable) < 2 or args.base_domain_from not in readable or
+    if (len(readable) < 2 or (args.base_domain is None and args.base_domain_from not in readable) or
             any(misses or not closed for misses, closed in readable.values())):
         return None
     order = sorted(readable)
@@ -285,6 +287,8 @@ def _protrusion_cones(args, models, mine, ranks, report):
     start = time.perf_counter()
     if ranks.rank == 0:
         def find():
+            if args.base_domain is not None:
+                return find_protrusion_cones(_all_surfaces(models, order), 0, load_base_domain(args.base_domain))
             return find_protrusion_cones(_all_surfaces(models, order), order.index(args.base_domain_from))
         try:
             result = run_in_child("cones", "collection", find, "finding protrusions", args.model_timeout)
@@ -410,10 +414,15 @@ def _base_domain(args, models, ranks, report, cones=None):
     the base domain, or None if it could not be had."""
     if cones is not None:
         domain = polydata_from_text(cones)
-        source = "built from %s, with protrusion cones" % models[args.base_domain_from].name
+        if args.base_domain is not None:
+            source = "%s, with protrusion cones" % args.base_domain
+            said = args.base_domain
+        else:
+            source = "built from %s, with protrusion cones" % models[args.base_domain_from].name
+            said = "from %s" % models[args.base_domain_from].name
         if ranks.rank == 0:
-            print("base domain from %s, with %d protrusion cone%s" % (
-                models[args.base_domain_from].name, len(report["protrusion_cones"]["cones"]),
+            print("base domain %s, with %d protrusion cone%s" % (
+                said, len(report["protrusion_cones"]["cones"]),
                 "" if len(report["protrusion_cones"]["cones"]) == 1 else "s"), flush=True)
             write_polydata(domain, os.path.join(args.output, "base_domain.vtp"))
         report["base_domain"] = describe_base_domain(domain, source)

@@ -162,9 +162,10 @@ def is_closed(surface):
     return bool(len(counts)) and bool(numpy.all(counts == 2))
 
 
-def find_protrusion_cones(models, base_domain_model):
+def find_protrusion_cones(models, base_domain_model, base_domain=None):
     """Protrusion Cones on the surfaces of `models` (a multiblock, one block
-    per model), L0 from model `base_domain_model`: (first, roots, tips,
+    per model), L0 from model `base_domain_model`, or the given L0
+    `base_domain` (a polydata; its triangles are split): (first, roots, tips,
     found, domain): first the files' feature count F, roots the feature
     nearest to each cone's tip (cone i is feature F + i), tips per model the
     cones' tip vertices (-1 where the model has none), found per model every
@@ -174,6 +175,8 @@ def find_protrusion_cones(models, base_domain_model):
     cones = cmp.vtkCMPProtrusionCones()
     cones.SetInputData(collection_blocks(models))
     cones.SetBaseDomainModel(base_domain_model)
+    if base_domain is not None:
+        cones.SetInputData(1, base_domain)
     surfaces = run(cones)
     domain = cones.GetOutputDataObject(1)
     roots_array = domain.GetFieldData().GetArray(array_names.PROTRUSION_CONE_ROOTS_ARRAY)

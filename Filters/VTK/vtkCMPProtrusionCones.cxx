@@ -18,11 +18,18 @@ vtkStandardNewMacro(vtkCMPProtrusionCones);
 
 vtkCMPProtrusionCones::vtkCMPProtrusionCones()
 {
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
 }
 
-int vtkCMPProtrusionCones::FillInputPortInformation(int, vtkInformation* info)
+int vtkCMPProtrusionCones::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   // The whole collection at once: the composite pipeline must not iterate.
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -64,17 +71,29 @@ int vtkCMPProtrusionCones::RequestData(
     return fail(s.message());
   const std::vector<const cmp::TriangleMesh*>& surfaces = read.surfaces;
   std::vector<cmp::LandmarkList>& landmarks = read.landmarks;
-  if (this->BaseDomainModel < 0 || this->BaseDomainModel >= static_cast<int>(count))
-    return fail("BaseDomainModel is " + std::to_string(this->BaseDomainModel) + ", but the input has " +
-      std::to_string(count) + " surfaces");
   cmp::ProtrusionConeOptions options;
   options.leastModels = this->LeastModels;
   options.largestBallShare = this->LargestBallShare;
   cmp::BaseDomain domain;
   cmp::ProtrusionConeReport report;
-  if (cmp::Status s = cmp::addProtrusionCones(surfaces, landmarks, this->BaseDomainModel, domain, options, &report);
-      !s.ok())
-    return fail(collection.labels[this->BaseDomainModel] + s.message());
+  if (vtkPolyData* givenInput = vtkPolyData::GetData(inputVector[1]))
+  {
+    cmp::BaseDomain given;
+    if (cmp::Status s = cmp::bridge::toBaseDomain(givenInput, given); !s.ok())
+      return fail("the base domain: " + s.message());
+    if (cmp::Status s = cmp::addProtrusionCones(surfaces, landmarks, given, domain, options, &report); !s.ok())
+      return fail(s.message());
+  }
+  else
+  {
+    if (this->BaseDomainModel < 0 || this->BaseDomainModel >= static_cast<int>(count))
+      return fail("BaseDomainModel is " + std::to_string(this->BaseDomainModel) + ", but the input has " +
+        std::to_string(count) + " surfaces");
+    if (cmp::Status s =
+          cmp::addProtrusionCones(surfaces, landmarks, this->BaseDomainModel, domain, options, &report);
+        !s.ok())
+      return fail(collection.labels[this->BaseDomainModel] + s.message());
+  }
 
   std::vector<vtkSmartPointer<vtkPolyData>> results;
   for (std::size_t m = 0; m < count; ++m)

@@ -13,10 +13,13 @@
 /// cone's feature), and field arrays `ProtrusionTips` and
 /// `ProtrusionRoots` (every protrusion found, and the feature nearest to
 /// each). Output 1: L0 built from model `BaseDomainModel` with the cones,
-/// field array `ProtrusionConeRoots` (per cone, its root feature). Fails
-/// (vtkErrorMacro, both outputs empty) naming the model when a surface or
-/// its landmarks do not fit, when the L0 model misses landmarks, or when L0
-/// cannot be built.
+/// field array `ProtrusionConeRoots` (per cone, its root feature). Input 1
+/// (optional): a given L0 (point array `FeatureId`, one vertex per file
+/// feature); the cones then split its triangles, which it otherwise keeps,
+/// and `BaseDomainModel` is not used. Fails (vtkErrorMacro, both outputs
+/// empty) naming the model when a surface or its landmarks do not fit,
+/// when the L0 model misses landmarks, when L0 cannot be built, or when
+/// the given L0 is not a base domain of the files' features.
 
 #include "CMPFiltersModule.h"
 
@@ -31,7 +34,8 @@ public:
   /// \brief Prints the properties.
   void PrintSelf(ostream& os, vtkIndent indent) override;
   /// \brief The model (its index among the input's surfaces) L0 is built
-  ///        from (default 0); it must have every landmark.
+  ///        from (default 0; not used when input 1 gives L0); it must have
+  ///        every landmark.
   vtkSetMacro(BaseDomainModel, int);
   /// \brief The model L0 is built from.
   vtkGetMacro(BaseDomainModel, int);

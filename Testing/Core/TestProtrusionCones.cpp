@@ -1,4 +1,5 @@
 #include <cmp/basedomain/BaseDomain.h>
+#include <cmp/io/MeshFile.h>
 #include <cmp/layout/ProtrusionCones.h>
 #include "TestMeshes.h"
 
@@ -98,6 +99,68 @@ TEST(ProtrusionCones, ATailTheCollectionSharesGetsAConeInTheBaseTriangleHoldingI
   EXPECT_TRUE(report.roots.empty());
   EXPECT_EQ(domain.mesh.vertexCount(), 21);
   EXPECT_EQ(unchanged[0].size(), 21u);
+}
+
+TEST(ProtrusionCones, AGivenBaseDomainKeepsItsTrianglesButTheOneHoldingMostTips)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  // The published template (vertex i = landmark i, built from 381 by
+  // another tool): it has no tail vertex either.
+  MeshFileData file;
+  ASSERT_TRUE(readOBJ(test::sharedDataDir() + "/layouts/fourleg-381.obj", file).ok());
+  BaseDomain given;
+  given.mesh = file.mesh;
+  for (int v = 0; v < given.mesh.vertexCount(); ++v)
+    given.featureIds.push_back(v);
+  ASSERT_TRUE(checkBaseDomain(given, 21).ok());
+
+  std::vector<test::LandmarkedModel> models;
+  for (const char* name : { "381", "383", "385", "388" })
+    models.push_back(test::landmarkedRealModel(name));
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+  for (const test::LandmarkedModel& model : models)
+  {
+    surfaces.push_back(&model.data.mesh);
+    landmarks.push_back(model.landmarks);
+  }
+  BaseDomain domain;
+  ProtrusionConeReport report;
+  const Status status = addProtrusionCones(surfaces, landmarks, given, domain, {}, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  ASSERT_EQ(report.roots, std::vector<int>{ 13 });
+  ASSERT_EQ(landmarks[0].size(), 22u);
+  EXPECT_EQ(landmarks[0][21], kMissingLandmark); // 381 has no tail: placed later
+  for (int m = 1; m < 4; ++m)
+    EXPECT_NE(landmarks[m][21], kMissingLandmark) << models[m].name;
+  ASSERT_TRUE(checkBaseDomain(domain, 22).ok());
+  EXPECT_EQ(domain.mesh.triangleCount(), given.mesh.triangleCount() + 2);
+  // The given vertices stay where they were, with their features.
+  for (int v = 0; v < 21; ++v)
+  {
+    EXPECT_EQ(domain.featureIds[v], given.featureIds[v]);
+    EXPECT_EQ(domain.mesh.points[v], given.mesh.points[v]);
+  }
+  // Every given triangle but the split one is kept; the cone is joined to
+  // the split one's corners, round the tail's root.
+  const Triangle split = given.mesh.triangles[report.splitTriangles[0]];
+  for (int t = 0; t < given.mesh.triangleCount(); ++t)
+    if (t != report.splitTriangles[0])
+      EXPECT_NE(std::find(domain.mesh.triangles.begin(), domain.mesh.triangles.end(), given.mesh.triangles[t]),
+        domain.mesh.triangles.end());
+  const std::set<int> star = neighbourFeatures(domain, 21);
+  EXPECT_EQ(star, (std::set<int>{ split[0], split[1], split[2] }));
+  EXPECT_EQ(star.count(13), 1u);
+
+  // A given L0 that is not one, or does not fit the landmarks, is refused.
+  BaseDomain broken = given;
+  broken.mesh.triangles.pop_back();
+  std::vector<LandmarkList> lists;
+  for (const test::LandmarkedModel& model : models)
+    lists.push_back(model.landmarks);
+  EXPECT_FALSE(addProtrusionCones(surfaces, lists, broken, domain).ok());
+  lists[1].pop_back();
+  EXPECT_FALSE(addProtrusionCones(surfaces, lists, given, domain).ok());
 }
 
 TEST(ProtrusionCones, RefuseOptionsAndCollectionsThatDoNotFit)

@@ -1866,7 +1866,8 @@ def case_protrusion_cones(tmp):
     cone (feature 21, rooted at landmark 13) at their tips, places it on
     381 and builds L0 with it (22 vertices, the tail tip's base triangle
     split in three), and every model is remeshed with the 22 landmarks; the
-    tails' tips come nearer than with --no-protrusion-cones."""
+    tails' tips come nearer than with --no-protrusion-cones. A given L0
+    (the template) gets the cone by a split of its triangle at the tips."""
     import numpy
     names = ["381", "383", "385"]
     pairs = [(shrec(name, "off"), shrec(name, "vts")) for name in names]
@@ -1912,6 +1913,38 @@ def case_protrusion_cones(tmp):
         without = plain["models"][name]["remesh"]["hausdorff_per_diagonal"]
         print("%s: %.2f%% of the diagonal with the cone, %.2f%% without" % (name, 100 * with_cone, 100 * without))
         check(with_cone < without, "%s: %.4f with the cone, %.4f without" % (name, with_cone, without))
+
+    # A given L0 (the published template, which has no tail vertex either)
+    # gets the cone too: the triangle holding the tips is split, every
+    # other triangle of the template is kept.
+    layout = os.path.join(DATA, "layouts", "fourleg-381.vtp")
+    out = os.path.join(tmp, "out-template")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain", layout, "--level", "3",
+                                                                     "--no-render"], out)
+    check_equal(status, 0, "template: exit status (stdout: %s, stderr: %s)" % (stdout, stderr))
+    check_models_ok(report, pairs, "template with protrusion cones", 22)
+    check_equal(report["protrusion_cones"]["cones"], [{"feature": 21, "root": 13, "models": ["383", "385"]}],
+                "the template's cones")
+    check_contains(stdout, "base domain %s, with 1 protrusion cone" % layout, "stdout")
+    check_equal(report["base_domain"].get("source"), "%s, with protrusion cones" % layout, "template source")
+
+    def triangles(domain):
+        ids = domain.GetPointData().GetArray("FeatureId")
+        result = set()
+        for t in range(domain.GetNumberOfCells()):
+            cell = domain.GetCell(t)
+            result.add(tuple(sorted(int(ids.GetValue(cell.GetPointId(k))) for k in range(3))))
+        return result
+    given = triangles(read_vtp(layout))
+    coned = triangles(read_vtp(os.path.join(out, "base_domain.vtp")))
+    check_equal((len(given), len(coned)), (38, 40), "triangles of the template and of L0 with the cone")
+    split = given - coned
+    check_equal(len(split), 1, "template triangles split")
+    check_equal(coned - given, {tuple(sorted(pair + (21,))) for corners in split
+                                for pair in ((corners[0], corners[1]), (corners[1], corners[2]),
+                                             (corners[0], corners[2]))}, "the cone's triangles")
+    check(13 in next(iter(split)), "the split triangle %s is not at the tail's root" % (split,))
+    check_remeshed(out, report, stdout, names, 3, landmarks=22)
 
 
 def read_off(path):

@@ -4,7 +4,8 @@ the file has, Check Inputs accepts them with AllowMissingLandmarks and
 names them without, Base Domain Builder refuses such a model, the landmark
 writer writes them back as missing, and Missing Landmark Placer places them
 from the models of the collection that have them, marking what it placed;
-Protrusion Cones then finds no protrusion to give a cone on them.
+Protrusion Cones then finds no protrusion to give a cone on them, keeps a
+given L0 and refuses one of other features.
 On the shipped examples (6 landmarks each): blob misses feature 2 (.vts),
 peanut its last feature (.csv, nan,nan,nan), capsule has all.
 
@@ -25,6 +26,27 @@ from cmp_test_support import ErrorCapture, check, check_contains, check_equal, l
 
 def feature_ids(surface):
     return {int(f): v for v, f in enumerate(vtk_to_numpy(surface.GetPointData().GetArray("FeatureId"))) if f >= 0}
+
+
+def tetrahedron_domain():
+    """A 4-vertex base domain (FeatureId 0 to 3)."""
+    from vtkmodules.vtkCommonCore import vtkIntArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    points = vtkPoints()
+    for p in ((1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1)):
+        points.InsertNextPoint(p)
+    cells = vtkCellArray()
+    for t in ((0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 3, 2)):
+        cells.InsertNextCell(3, t)
+    ids = vtkIntArray()
+    ids.SetName("FeatureId")
+    for i in range(4):
+        ids.InsertNextValue(i)
+    domain = vtkPolyData()
+    domain.SetPoints(points)
+    domain.SetPolys(cells)
+    domain.GetPointData().AddArray(ids)
+    return domain
 
 
 def main():
@@ -141,6 +163,24 @@ def main():
         check(cone_surfaces.GetBlock(block).GetFieldData().GetArray("ProtrusionTips") is not None,
               "block %d has ProtrusionTips" % block)
 
+    # With a given L0 (input 1, built from the capsule) the filter keeps it
+    # when there are no cones; an L0 of other features is refused by name.
+    capsule_domain = names["BaseDomainBuilder"](Input=capsule)
+    given = names["ProtrusionCones"](Input=placer, BaseDomain=capsule_domain)
+    with ErrorCapture(given.GetClientSideObject()) as errors:
+        given.UpdatePipeline()
+    check_equal(errors.text, "", "Protrusion Cones with a given L0")
+    given_domain = servermanager.Fetch(given, idx=1)
+    built_domain = servermanager.Fetch(capsule_domain)
+    check_equal((given_domain.GetNumberOfPoints(), given_domain.GetNumberOfCells()),
+                (built_domain.GetNumberOfPoints(), built_domain.GetNumberOfCells()), "the given L0 kept")
+    tetrahedron = simple.PVTrivialProducer()
+    tetrahedron.GetClientSideObject().SetOutput(tetrahedron_domain())
+    refused = names["ProtrusionCones"](Input=placer, BaseDomain=tetrahedron)
+    with ErrorCapture(refused.GetClientSideObject()) as errors:
+        refused.UpdatePipeline()
+    check_contains(errors.text, "model 0 has 6 features, the given L0 4", "Protrusion Cones with a 4-vertex L0")
+    check_equal(servermanager.Fetch(refused, idx=1).GetNumberOfPoints(), 0, "L0 after the refusal")
     # No model with every feature: the placer says so.
     lonely = names["MissingLandmarkPlacer"](Input=simple.GroupDatasets(Input=[blob, peanut]))
     with ErrorCapture(lonely.GetClientSideObject()) as errors:

@@ -121,39 +121,42 @@ Status findProtrusions(const TriangleMesh& surface, const LandmarkList& landmark
   return {};
 }
 
-Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
-  int baseDomainModel, BaseDomain& domain, const ProtrusionConeOptions& options, ProtrusionConeReport* report)
+namespace
 {
-  ProtrusionConeReport local;
-  ProtrusionConeReport& out = report ? *report : local;
-  out = ProtrusionConeReport{};
-  if (Status s = checkOptions(options); !s.ok())
-    return s;
+
+/// The checks both entries share: one landmark list per surface, each of
+/// `features` entries that fit its surface.
+Status checkCollection(const std::vector<const TriangleMesh*>& surfaces, const std::vector<LandmarkList>& landmarks,
+  std::size_t features, const std::string& against)
+{
   const int models = static_cast<int>(surfaces.size());
   if (landmarks.size() != surfaces.size())
     return Status::error("protrusion cones: " + std::to_string(landmarks.size()) + " landmark lists for " +
       std::to_string(models) + " surfaces");
-  if (baseDomainModel < 0 || baseDomainModel >= models)
-    return Status::error("protrusion cones: there is no model " + std::to_string(baseDomainModel));
-  const std::size_t features = landmarks[baseDomainModel].size();
   for (int m = 0; m < models; ++m)
   {
     if (!surfaces[m])
       return Status::error("protrusion cones: model " + std::to_string(m) + " has no surface");
     if (landmarks[m].size() != features)
       return Status::error("protrusion cones: model " + std::to_string(m) + " has " +
-        std::to_string(landmarks[m].size()) + " features, model " + std::to_string(baseDomainModel) + " " +
-        std::to_string(features));
+        std::to_string(landmarks[m].size()) + " features, " + against + " " + std::to_string(features));
     if (Status s = validateLandmarks(landmarks[m], surfaces[m]->vertexCount(), -1, true); !s.ok())
       return Status::error("protrusion cones: model " + std::to_string(m) + ": " + s.message());
   }
-  if (missingLandmarkCount(landmarks[baseDomainModel]) > 0)
-    return Status::error("protrusion cones: model " + std::to_string(baseDomainModel) +
-      ", which L0 is built from, misses landmarks");
+  return {};
+}
 
-  BaseDomain built;
-  if (Status s = buildBaseDomain(*surfaces[baseDomainModel], landmarks[baseDomainModel], built); !s.ok())
-    return s;
+/// The cones on `base`: the tip's base triangle from model `preferred`
+/// when it has the tip, else (`preferred` < 0, or without the tip) the
+/// base triangle most of the models with the tip put it in (the first
+/// such model's on a tie; a model that cannot be traced over `base` has
+/// no say).
+Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  const BaseDomain& base, int preferred, BaseDomain& domain, const ProtrusionConeOptions& options,
+  ProtrusionConeReport& out)
+{
+  const int models = static_cast<int>(surfaces.size());
+  const std::size_t features = base.featureIds.size();
 
   // Per model, the tip nearest to each feature where it has exactly one.
   out.protrusions.assign(models, {});
@@ -176,26 +179,21 @@ Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std:
       }
   }
 
-  // Each cone's base triangle: where its tip lies on the L0 model, or on
-  // the first model that has it, traced over L0.
-  struct Cone
-  {
-    int root, model, triangle, count;
-  };
-  std::vector<Cone> cones;
+  // The base triangle whose patch holds `model`'s tip of `root` (-1 if the
+  // model cannot be traced over `base`, with the reason in `why`).
   std::map<int, TracedNet> nets;
-  for (const auto& [root, count] : modelsWith)
-  {
-    if (count < options.leastModels)
-      continue;
-    int model = tipOf[baseDomainModel].count(root) ? baseDomainModel : -1;
-    for (int m = 0; m < models && model < 0; ++m)
-      if (tipOf[m].count(root))
-        model = m;
+  std::map<int, std::string> untraced;
+  const auto tipTriangle = [&](int model, int root) {
+    if (untraced.count(model))
+      return -1;
     if (!nets.count(model))
     {
-      if (Status s = traceFeatureNet(*surfaces[model], landmarks[model], built, nets[model]); !s.ok())
-        return Status::error("protrusion cones: model " + std::to_string(model) + ": " + s.message());
+      if (Status s = traceFeatureNet(*surfaces[model], landmarks[model], base, nets[model]); !s.ok())
+      {
+        nets.erase(model);
+        untraced[model] = s.message();
+        return -1;
+      }
     }
     const TracedNet& net = nets[model];
     const int tip = tipOf[model][root];
@@ -207,9 +205,57 @@ Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std:
         (triangle < 0 || net.patchOfTriangle[t] < triangle))
         triangle = net.patchOfTriangle[t];
     }
-    if (triangle < 0)
-      continue; // not expected: every input vertex keeps its triangles' patches
-    cones.push_back({ root, model, triangle, count });
+    return triangle; // -1 not expected: every input vertex keeps its triangles' patches
+  };
+
+  struct Cone
+  {
+    int root, model, triangle, count;
+  };
+  std::vector<Cone> cones;
+  for (const auto& [root, count] : modelsWith)
+  {
+    if (count < options.leastModels)
+      continue;
+    if (preferred >= 0 && tipOf[preferred].count(root))
+    {
+      const int triangle = tipTriangle(preferred, root);
+      if (triangle < 0 && untraced.count(preferred))
+        return Status::error(
+          "protrusion cones: model " + std::to_string(preferred) + ": " + untraced[preferred]);
+      if (triangle >= 0)
+        cones.push_back({ root, preferred, triangle, count });
+      continue;
+    }
+    std::map<int, int> votes;  // base triangle -> models
+    std::map<int, int> firstOf; // base triangle -> the first model in it
+    for (int m = 0; m < models; ++m)
+    {
+      if (!tipOf[m].count(root))
+        continue;
+      const int triangle = tipTriangle(m, root);
+      if (triangle < 0)
+        continue;
+      ++votes[triangle];
+      firstOf.emplace(triangle, m);
+      if (preferred >= 0)
+        break; // built L0: the first model with the tip decides
+    }
+    int best = -1;
+    for (const auto& [triangle, n] : votes)
+      if (best < 0 || n > votes[best] || (n == votes[best] && firstOf[triangle] < firstOf[best]))
+        best = triangle;
+    if (best < 0)
+    {
+      if (preferred >= 0)
+      {
+        for (int m = 0; m < models; ++m)
+          if (untraced.count(m))
+            return Status::error("protrusion cones: model " + std::to_string(m) + ": " + untraced[m]);
+      }
+      continue; // no model with the tip fits the given L0: no cone
+    }
+    cones.push_back({ root, firstOf[best], best, count });
   }
   // One cone per base triangle: the one more models have.
   std::sort(cones.begin(), cones.end(), [](const Cone& a, const Cone& b) {
@@ -221,7 +267,7 @@ Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std:
       kept.push_back(c);
   std::sort(kept.begin(), kept.end(), [](const Cone& a, const Cone& b) { return a.root < b.root; });
 
-  domain = built;
+  domain = base;
   for (const Cone& c : kept)
   {
     const int vertex = domain.mesh.vertexCount();
@@ -230,16 +276,16 @@ Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std:
     out.roots.push_back(c.root);
     out.tipModels.push_back(c.model);
     out.splitTriangles.push_back(c.triangle);
-    const Triangle tri = built.mesh.triangles[c.triangle];
+    const Triangle tri = base.mesh.triangles[c.triangle];
     for (int k = 0; k < 3; ++k)
       domain.mesh.triangles.push_back({ tri[k], tri[(k + 1) % 3], vertex });
   }
   // The split triangles go (in the order of the others, the new ones last).
   std::vector<Triangle> triangles;
-  for (int t = 0; t < built.mesh.triangleCount(); ++t)
+  for (int t = 0; t < base.mesh.triangleCount(); ++t)
     if (std::none_of(kept.begin(), kept.end(), [&](const Cone& k) { return k.triangle == t; }))
-      triangles.push_back(built.mesh.triangles[t]);
-  triangles.insert(triangles.end(), domain.mesh.triangles.begin() + built.mesh.triangleCount(),
+      triangles.push_back(base.mesh.triangles[t]);
+  triangles.insert(triangles.end(), domain.mesh.triangles.begin() + base.mesh.triangleCount(),
     domain.mesh.triangles.end());
   domain.mesh.triangles = std::move(triangles);
   if (Status s = checkBaseDomain(domain, static_cast<int>(features + kept.size())); !s.ok())
@@ -252,6 +298,50 @@ Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std:
       landmarks[m].push_back(found != tipOf[m].end() ? found->second : kMissingLandmark);
     }
   return {};
+}
+
+} // namespace
+
+Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  int baseDomainModel, BaseDomain& domain, const ProtrusionConeOptions& options, ProtrusionConeReport* report)
+{
+  ProtrusionConeReport local;
+  ProtrusionConeReport& out = report ? *report : local;
+  out = ProtrusionConeReport{};
+  if (Status s = checkOptions(options); !s.ok())
+    return s;
+  const int models = static_cast<int>(surfaces.size());
+  if (landmarks.size() != surfaces.size())
+    return checkCollection(surfaces, landmarks, 0, ""); // says so
+  if (baseDomainModel < 0 || baseDomainModel >= models)
+    return Status::error("protrusion cones: there is no model " + std::to_string(baseDomainModel));
+  const std::size_t features = landmarks[baseDomainModel].size();
+  if (Status s = checkCollection(surfaces, landmarks, features, "model " + std::to_string(baseDomainModel)); !s.ok())
+    return s;
+  if (missingLandmarkCount(landmarks[baseDomainModel]) > 0)
+    return Status::error("protrusion cones: model " + std::to_string(baseDomainModel) +
+      ", which L0 is built from, misses landmarks");
+
+  BaseDomain built;
+  if (Status s = buildBaseDomain(*surfaces[baseDomainModel], landmarks[baseDomainModel], built); !s.ok())
+    return s;
+  return addCones(surfaces, landmarks, built, baseDomainModel, domain, options, out);
+}
+
+Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  const BaseDomain& given, BaseDomain& domain, const ProtrusionConeOptions& options, ProtrusionConeReport* report)
+{
+  ProtrusionConeReport local;
+  ProtrusionConeReport& out = report ? *report : local;
+  out = ProtrusionConeReport{};
+  if (Status s = checkOptions(options); !s.ok())
+    return s;
+  const std::size_t features = given.featureIds.size();
+  if (Status s = checkBaseDomain(given, static_cast<int>(features)); !s.ok())
+    return Status::error("protrusion cones: the given L0: " + s.message());
+  if (Status s = checkCollection(surfaces, landmarks, features, "the given L0"); !s.ok())
+    return s;
+  return addCones(surfaces, landmarks, given, -1, domain, options, out);
 }
 
 } // namespace cmp

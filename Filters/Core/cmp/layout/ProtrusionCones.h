@@ -85,7 +85,7 @@ struct ProtrusionConeReport
 /// each cone splits in three the base triangle whose patch holds its tip
 /// when the tip's model is traced over that L0 (`traceFeatureNet()`; the
 /// tip of `baseDomainModel` when it has one, else of the first model that
-/// has one), so its star is a thin fan up the protrusion to the landmarks
+/// has one and traces over it), so its star is a thin fan up the protrusion to the landmarks
 /// round its root. Joined by decimation instead, a tail curled back to
 /// the hind legs got a cone joined across the body, and the maps folded
 /// at the tip (Documentation/known-issues.md, the map's section). Where
@@ -100,6 +100,28 @@ struct ProtrusionConeReport
 /// model cannot be traced over it.
 Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
   int baseDomainModel, BaseDomain& domain, const ProtrusionConeOptions& options = {},
+  ProtrusionConeReport* report = nullptr);
+
+/// \brief The same on a given L0 (a template, or one built earlier): the
+///        cones split triangles of `given`, which keeps its vertices, edges
+///        and other triangles, so a remesh over `domain` still has `given`'s
+///        landmarks at the same vertices.
+///
+/// Each cone's base triangle is the one whose patch holds the tip on most
+/// of the models that have it, each traced over `given` (a tie goes to the
+/// triangle of the earliest model; a model that cannot be traced over
+/// `given` has no say, and a cone no model with it can be traced for is
+/// not added). `report.tipModels` names the first model in the chosen
+/// triangle. Without cones, `domain` is `given` and `landmarks` are
+/// unchanged. Why a given L0 needs cones as much: the published template
+/// of the shared data has no tail vertex either, and its maps fold at the
+/// tails' roots as a built L0's do (Documentation/filters/ProtrusionCones.md).
+/// \pre Every model has one entry per vertex of `given`.
+/// Fails (Status) when `given` is not a base domain of F features
+/// (`checkBaseDomain()`), the landmark lists differ in length from F or
+/// do not fit their surfaces, or the options are out of range.
+Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  const BaseDomain& given, BaseDomain& domain, const ProtrusionConeOptions& options = {},
   ProtrusionConeReport* report = nullptr);
 
 } // namespace cmp
