@@ -301,12 +301,15 @@ def _protrusion_cones(args, models, mine, ranks, report):
         if ranks.rank == 0:
             print("no protrusion cones: %s" % result, flush=True)
         return None
-    first, roots, tips, found, domain = result
+    first, roots, tips, found, domain, without = result
     report["protrusion_cones"] = {
         "cones": [{"feature": first + i, "root": root,
                    "models": [models[index].name for position, index in enumerate(order) if tips[position][i] >= 0]}
                   for i, root in enumerate(roots)],
         "seconds": seconds}
+    if without:
+        report["protrusion_cones"]["without_cone"] = [{"root": root, "apart": models[order[position]].name}
+                                                      for root, position in without]
     for position, index in enumerate(order):
         model = models[index]
         if roots:
@@ -323,6 +326,10 @@ def _protrusion_cones(args, models, mine, ranks, report):
                 model.missing = missing
                 model.report["missing_landmarks"] = missing
     if ranks.rank == 0:
+        for root, position in without:
+            print("no protrusion cone by landmark %d: %s's protrusion leaves the body elsewhere than the other "
+                  "models' (its tip lies in a base triangle beside none of theirs)" % (root, models[order[position]].name),
+                  flush=True)
         for i, root in enumerate(roots):
             having = [models[index].name for position, index in enumerate(order) if tips[position][i] >= 0]
             print("protrusion cone: feature %d at the tip of the landmark-free protrusion nearest to landmark %d "

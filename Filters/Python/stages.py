@@ -166,11 +166,13 @@ def find_protrusion_cones(models, base_domain_model, base_domain=None):
     """Protrusion Cones on the surfaces of `models` (a multiblock, one block
     per model), L0 from model `base_domain_model`, or the given L0
     `base_domain` (a polydata; its triangles are split): (first, roots, tips,
-    found, domain): first the files' feature count F, roots the feature
-    nearest to each cone's tip (cone i is feature F + i), tips per model the
-    cones' tip vertices (-1 where the model has none), found per model every
-    protrusion as [vertex, nearest feature], and domain L0 with the cones as
-    text (isolation.polydata_to_text).
+    found, domain, without): first the files' feature count F, roots the
+    feature nearest to each cone's tip (cone i is feature F + i), tips per
+    model the cones' tip vertices (-1 where the model has none), found per
+    model every protrusion as [vertex, nearest feature], domain L0 with the
+    cones as text (isolation.polydata_to_text), and without the protrusions
+    left without a cone as [root feature, position of the model whose tip
+    lies apart from the others'].
     Raises StageError if the filter fails."""
     cones = cmp.vtkCMPProtrusionCones()
     cones.SetInputData(collection_blocks(models))
@@ -194,7 +196,10 @@ def find_protrusion_cones(models, base_domain_model, base_domain=None):
         nearest = field.GetArray(array_names.PROTRUSION_ROOTS_ARRAY)
         found.append([[int(vertices.GetTuple1(i)), int(nearest.GetTuple1(i))]
                       for i in range(vertices.GetNumberOfTuples())])
-    return first, roots, tips, found, polydata_to_text(domain)
+    apart = domain.GetFieldData().GetArray(array_names.PROTRUSIONS_WITHOUT_CONE_ARRAY)
+    without = [[int(apart.GetComponent(i, 0)), int(apart.GetComponent(i, 1))]
+               for i in range(apart.GetNumberOfTuples())] if apart is not None else []
+    return first, roots, tips, found, polydata_to_text(domain), without
 
 
 def apply_cone_landmarks(model, tips):

@@ -38,6 +38,12 @@ constexpr const char* kPlacedFeatureClimbArray = "PlacedFeatureClimb";
 ///        cone (features F, F + 1, ...), the feature whose landmark is its
 ///        root.
 constexpr const char* kProtrusionConeRootsArray = "ProtrusionConeRoots";
+/// \brief Field int array of that base domain, 2 components: per protrusion
+///        the models share but got no cone because they disagree where it
+///        leaves the body, its root feature and the first model (index in
+///        the collection) whose tip lies in a base triangle that shares no
+///        edge with the one the cone would have split.
+constexpr const char* kProtrusionsWithoutConeArray = "ProtrusionsWithoutCone";
 /// \brief Field int array: the tips of the landmark-free protrusions
 ///        Protrusion Cones found on a surface.
 constexpr const char* kProtrusionTipsArray = "ProtrusionTips";

@@ -8,6 +8,7 @@
 
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
+#include <vtkIntArray.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
@@ -74,6 +75,7 @@ int vtkCMPProtrusionCones::RequestData(
   cmp::ProtrusionConeOptions options;
   options.leastModels = this->LeastModels;
   options.largestBallShare = this->LargestBallShare;
+  options.ballScales = this->BallScales;
   cmp::BaseDomain domain;
   cmp::ProtrusionConeReport report;
   if (vtkPolyData* givenInput = vtkPolyData::GetData(inputVector[1]))
@@ -119,6 +121,15 @@ int vtkCMPProtrusionCones::RequestData(
   domainOutput->ShallowCopy(cmp::bridge::toPolyData(domain));
   auto domainField = vtkSmartPointer<vtkFieldData>::New();
   domainField->AddArray(cmp::bridge::intArray(cmp::bridge::kProtrusionConeRootsArray, report.roots));
+  auto without = vtkSmartPointer<vtkIntArray>::New();
+  without->SetName(cmp::bridge::kProtrusionsWithoutConeArray);
+  without->SetNumberOfComponents(2);
+  for (const auto& d : report.disagreeing)
+  {
+    const int pair[2] = { d.root, d.model };
+    without->InsertNextTypedTuple(pair);
+  }
+  domainField->AddArray(without);
   domainOutput->SetFieldData(domainField);
   this->UpdateProgress(1.0);
   return 1;
@@ -130,4 +141,5 @@ void vtkCMPProtrusionCones::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BaseDomainModel: " << this->BaseDomainModel << "\n";
   os << indent << "LeastModels: " << this->LeastModels << "\n";
   os << indent << "LargestBallShare: " << this->LargestBallShare << "\n";
+  os << indent << "BallScales: " << this->BallScales << "\n";
 }

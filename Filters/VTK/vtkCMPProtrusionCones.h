@@ -13,7 +13,10 @@
 /// cone's feature), and field arrays `ProtrusionTips` and
 /// `ProtrusionRoots` (every protrusion found, and the feature nearest to
 /// each). Output 1: L0 built from model `BaseDomainModel` with the cones,
-/// field array `ProtrusionConeRoots` (per cone, its root feature). Input 1
+/// field array `ProtrusionConeRoots` (per cone, its root feature) and
+/// `ProtrusionsWithoutCone` (root feature and model of each protrusion
+/// left without a cone because the models disagree where it leaves the
+/// body). Input 1
 /// (optional): a given L0 (point array `FeatureId`, one vertex per file
 /// feature); the cones then split its triangles, which it otherwise keeps,
 /// and `BaseDomainModel` is not used. Fails (vtkErrorMacro, both outputs
@@ -44,12 +47,21 @@ public:
   vtkSetMacro(LeastModels, int);
   /// \brief How many models must have a protrusion for it to get a cone.
   vtkGetMacro(LeastModels, int);
-  /// \brief A protrusion's ball of radius 0.075 sqrt(area) round its tip
-  ///        holds less than this share of a flat disk's area (default
-  ///        0.32; long thin tails 0.14 to 0.28, flanks 0.6 and more).
+  /// \brief A protrusion's ball of radius 0.075 sqrt(area) (or 2 or 4
+  ///        times that, `BallScales`) round its tip holds less than this
+  ///        share of a flat disk's area (default 0.32; long thin tails 0.11
+  ///        to 0.28, flanks 0.7 and more) and leaves the landmarks outside
+  ///        it in one piece.
   vtkSetMacro(LargestBallShare, double);
   /// \brief The ball share below which a peak is a protrusion.
   vtkGetMacro(LargestBallShare, double);
+  /// \brief Balls of 0.075 sqrt(area) times 1, 2, 4, ... are tried, this
+  ///        many (default 3, 1 to 8; the larger ones up to half the tip's
+  ///        depth): a tufted or clubbed tail is thin only against a larger
+  ///        ball.
+  vtkSetClampMacro(BallScales, int, 1, 8);
+  /// \brief How many ball radii are tried.
+  vtkGetMacro(BallScales, int);
 
 protected:
   vtkCMPProtrusionCones();
@@ -65,4 +77,5 @@ private:
   int BaseDomainModel = 0;
   int LeastModels = 2;
   double LargestBallShare = 0.32;
+  int BallScales = 3;
 };

@@ -26,7 +26,102 @@ std::set<int> neighbourFeatures(const BaseDomain& domain, int v)
   return result;
 }
 
+/// The surface of revolution about the x axis of `profile` (x, radius),
+/// from one pole (radius 0) to the other, `around` vertices per ring.
+TriangleMesh revolved(const std::vector<std::pair<double, double>>& profile, int around)
+{
+  TriangleMesh mesh;
+  const int rings = static_cast<int>(profile.size()) - 2;
+  mesh.points.push_back(Vec3(profile.front().first, 0.0, 0.0));
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j < around; ++j)
+    {
+      const double phi = 2.0 * kPi * j / around;
+      mesh.points.push_back(Vec3(profile[i].first, profile[i].second * std::cos(phi), profile[i].second * std::sin(phi)));
+    }
+  mesh.points.push_back(Vec3(profile.back().first, 0.0, 0.0));
+  const int last = mesh.vertexCount() - 1;
+  const auto at = [&](int ring, int j) { return 1 + (ring - 1) * around + (j % around); };
+  for (int j = 0; j < around; ++j)
+  {
+    mesh.triangles.push_back({ 0, at(1, j + 1), at(1, j) });
+    for (int i = 1; i < rings; ++i)
+    {
+      mesh.triangles.push_back({ at(i, j), at(i, j + 1), at(i + 1, j + 1) });
+      mesh.triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i + 1, j) });
+    }
+    mesh.triangles.push_back({ last, at(rings, j), at(rings, j + 1) });
+  }
+  return mesh;
+}
+
+/// A unit sphere with a spike `length` long and `radius` thick along +x,
+/// joined to it by a flat collar at x = 0.7; the +x pole is the spike's
+/// tip. With `club` > 0 the last 0.2 of the spike is a club of that
+/// radius, ending in a half sphere.
+TriangleMesh spikedSphere(double radius, double length, double club = 0.0)
+{
+  std::vector<std::pair<double, double>> profile;
+  const double collar = std::acos(-0.7); // the sphere's angle from the -x pole at x = 0.7
+  for (int i = 0; i <= 40; ++i)
+  {
+    const double a = collar * i / 40.0;
+    profile.push_back({ -std::cos(a), std::sin(a) });
+  }
+  const double top = std::sin(collar);
+  for (int i = 1; i <= 10; ++i)
+    profile.push_back({ 0.7 + 0.005 * i, top + (radius - top) * i / 10.0 });
+  const int along = static_cast<int>(length / 0.03);
+  for (int i = 1; i <= along; ++i)
+  {
+    const double x = 0.75 + length * i / along;
+    profile.push_back({ x, club > 0.0 && x > 0.75 + length - 0.2 ? club : radius });
+  }
+  const double end = club > 0.0 ? club : radius;
+  for (int i = 1; i < 8; ++i)
+  {
+    const double a = 0.5 * kPi * i / 8.0;
+    profile.push_back({ 0.75 + length + end * std::sin(a), end * std::cos(a) });
+  }
+  profile.push_back({ 0.75 + length + end, 0.0 });
+  return revolved(profile, 32);
+}
+
 } // namespace
+
+TEST(ProtrusionCones, ASpikeIsAProtrusionAtItsTipNotInItsMiddleAndAClubbedOneWithinALargerBall)
+{
+  const TriangleMesh spiked = spikedSphere(0.02, 3.0);
+  const int tip = spiked.vertexCount() - 1;
+  // Landmarks: the -x pole and four round the equator (ring 20).
+  LandmarkList body{ 0 };
+  for (int j : { 0, 8, 16, 24 })
+    body.push_back(1 + 19 * 32 + j);
+  std::vector<Protrusion> found;
+  ASSERT_TRUE(findProtrusions(spiked, body, found).ok());
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].vertex, tip);
+  EXPECT_LT(found[0].ballShare, 0.32);
+  // With a landmark at the tip, the spike's middle is the deepest point:
+  // its balls hold little (a thin band), but round a band the tip's side
+  // is left apart, so it is no protrusion.
+  LandmarkList withTip = body;
+  withTip.push_back(tip);
+  ASSERT_TRUE(findProtrusions(spiked, withTip, found).ok());
+  EXPECT_TRUE(found.empty()) << found.size() << " found, the first at x = " << spiked.points[found[0].vertex].x();
+
+  // A club at the tip (a tuft): too much area within the smallest ball,
+  // thin within twice that.
+  const TriangleMesh clubbed = spikedSphere(0.02, 3.0, 0.08);
+  ASSERT_TRUE(findProtrusions(clubbed, body, found).ok());
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].vertex, clubbed.vertexCount() - 1);
+  EXPECT_DOUBLE_EQ(found[0].ballRadius, 0.15);
+  ProtrusionConeOptions smallest;
+  smallest.ballScales = 1;
+  ASSERT_TRUE(findProtrusions(clubbed, body, found, smallest).ok());
+  EXPECT_TRUE(found.empty());
+}
 
 TEST(ProtrusionCones, FindTheTailsOfTheFourLeggedModelsThatHaveOne)
 {
@@ -80,8 +175,9 @@ TEST(ProtrusionCones, ATailTheCollectionSharesGetsAConeInTheBaseTriangleHoldingI
     if (landmarks[m][21] != kMissingLandmark)
       with.insert(models[m].name);
   }
-  EXPECT_EQ(with, (std::set<std::string>{ "383", "385", "388", "389", "392" }));
+  EXPECT_EQ(with, (std::set<std::string>{ "383", "385", "388", "389", "392" })); // 384's thick tail: no
   EXPECT_EQ(models[report.tipModels[0]].name, "383");
+  EXPECT_TRUE(report.disagreeing.empty()); // 385's, 388's and 389's tips lie in triangles beside 383's
   ASSERT_TRUE(checkBaseDomain(domain, 22).ok());
   EXPECT_EQ(domain.mesh.triangleCount(), 40);
   const int cone = static_cast<int>(std::find(domain.featureIds.begin(), domain.featureIds.end(), 21) -
@@ -91,7 +187,7 @@ TEST(ProtrusionCones, ATailTheCollectionSharesGetsAConeInTheBaseTriangleHoldingI
 
   // Fewer than leastModels models with the tail: no cone.
   ProtrusionConeOptions many;
-  many.leastModels = 6;
+  many.leastModels = 6; // five models have the tail
   std::vector<LandmarkList> unchanged;
   for (const test::LandmarkedModel& model : models)
     unchanged.push_back(model.landmarks);
@@ -99,6 +195,42 @@ TEST(ProtrusionCones, ATailTheCollectionSharesGetsAConeInTheBaseTriangleHoldingI
   EXPECT_TRUE(report.roots.empty());
   EXPECT_EQ(domain.mesh.vertexCount(), 21);
   EXPECT_EQ(unchanged[0].size(), 21u);
+}
+
+TEST(ProtrusionCones, NoConeWhereTheModelsDisagreeWhereTheProtrusionLeavesTheBody)
+{
+  CMP_REQUIRE_SHARED_DATA();
+  // Over L0 built from 381, 385's tail tip lies in base triangle 8-13-14,
+  // 388's in 12-13-6: they share landmark 13 only, so 388's map would have
+  // to turn its tail round 13 across two curves to reach a cone in 385's.
+  std::vector<test::LandmarkedModel> models;
+  for (const char* name : { "381", "385", "388" })
+    models.push_back(test::landmarkedRealModel(name));
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+  for (const test::LandmarkedModel& model : models)
+  {
+    surfaces.push_back(&model.data.mesh);
+    landmarks.push_back(model.landmarks);
+  }
+  BaseDomain domain;
+  ProtrusionConeReport report;
+  ASSERT_TRUE(addProtrusionCones(surfaces, landmarks, 0, domain, {}, &report).ok());
+  EXPECT_TRUE(report.roots.empty());
+  EXPECT_EQ(domain.mesh.vertexCount(), 21);
+  EXPECT_EQ(landmarks[1].size(), 21u);
+  ASSERT_EQ(report.disagreeing.size(), 1u);
+  const ProtrusionConeReport::Disagreement& d = report.disagreeing[0];
+  EXPECT_EQ(d.root, 13);
+  EXPECT_EQ(d.model, 2);
+  const auto features = [&](int t) {
+    std::set<int> f;
+    for (int v : domain.mesh.triangles[t])
+      f.insert(domain.featureIds[v]);
+    return f;
+  };
+  EXPECT_EQ(features(d.splitTriangle), (std::set<int>{ 8, 13, 14 }));
+  EXPECT_EQ(features(d.triangle), (std::set<int>{ 6, 12, 13 }));
 }
 
 TEST(ProtrusionCones, AGivenBaseDomainKeepsItsTrianglesButTheOneHoldingMostTips)
@@ -129,6 +261,8 @@ TEST(ProtrusionCones, AGivenBaseDomainKeepsItsTrianglesButTheOneHoldingMostTips)
   const Status status = addProtrusionCones(surfaces, landmarks, given, domain, {}, &report);
   ASSERT_TRUE(status.ok()) << status.message();
   ASSERT_EQ(report.roots, std::vector<int>{ 13 });
+  // The three tips lie in three triangles round 13, each beside the split one.
+  EXPECT_TRUE(report.disagreeing.empty());
   ASSERT_EQ(landmarks[0].size(), 22u);
   EXPECT_EQ(landmarks[0][21], kMissingLandmark); // 381 has no tail: placed later
   for (int m = 1; m < 4; ++m)
@@ -170,6 +304,11 @@ TEST(ProtrusionCones, RefuseOptionsAndCollectionsThatDoNotFit)
   std::vector<Protrusion> found;
   ProtrusionConeOptions bad;
   bad.ballRadius = 0.0;
+  EXPECT_FALSE(findProtrusions(sphere, landmarks, found, bad).ok());
+  bad = {};
+  bad.ballScales = 0;
+  EXPECT_FALSE(findProtrusions(sphere, landmarks, found, bad).ok());
+  bad.ballScales = 9;
   EXPECT_FALSE(findProtrusions(sphere, landmarks, found, bad).ok());
   bad = {};
   bad.leastModels = 0;

@@ -1645,6 +1645,11 @@ def case_default_collection(tmp):
     check(report["base_domain"]["source"].endswith(os.path.join("cgal-quadrupeds", "base_domain.vtp")),
           "not the shipped base domain: %s" % report["base_domain"]["source"])
     check_equal(report["base_domain"]["vertices"], 21, "the shipped base domain's vertices")
+    # The triceratops', the camel's and the bull's tails are found, but the
+    # bull raises its tail where the others hang theirs: no cone.
+    check_equal(report["protrusion_cones"].get("without_cone"), [{"root": 13, "apart": "bull"}],
+                "the protrusion left without a cone")
+    check_contains(stdout, "no protrusion cone by landmark 13: bull's protrusion leaves the body elsewhere", "stdout")
     check_remeshed(out, report, stdout, names, 4)
     # The collection's relax_samples: measured at level 4, the triceratops'
     # Hausdorff distance 10.1% -> 3.5% of the diagonal, the bull's 10.3% -> 5.2%.

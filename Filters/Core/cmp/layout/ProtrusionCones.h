@@ -23,14 +23,28 @@ struct ProtrusionConeOptions
   double leastDepth = 0.05;
   /// \brief A tip is the farthest from the landmarks within this distance.
   double peakRadius = 0.02;
-  /// \brief Radius of the ball round a tip whose area tells a protrusion.
+  /// \brief Radius of the smallest ball round a tip whose area tells a
+  ///        protrusion.
   double ballRadius = 0.075;
+  /// \brief Balls of `ballRadius` times 1, 2, 4, ... (this many, 1 to 8)
+  ///        are tried, the larger ones only up to half the tip's depth: a
+  ///        tail thick at its tip (a tuft, a club) is thin against a larger
+  ///        ball.
+  int ballScales = 3;
   /// \brief A protrusion's ball holds less than this share of a flat disk
-  ///        of that radius (a cylinder of girth c holds about c r of pi
-  ///        r^2). Measured on the SHREC'07 four-legged models: long thin
-  ///        tails 0.14 to 0.28, ears 0.2 to 0.44 (nearest to the head's
-  ///        landmark, two of them), a thick tail (384) 0.6, flanks and legs
-  ///        0.6 and more.
+  ///        of its radius (a cylinder of girth c capped at the tip holds
+  ///        about c r of pi r^2, so at every radius this asks for a girth
+  ///        under about r) and caps the surface: the landmarks outside the
+  ///        ball all lie in one piece of the surface outside it, which round
+  ///        the middle of a thin leg or tail with a landmark at its end they
+  ///        do not.
+  ///        Measured on the SHREC'07 four-legged models and the CGAL
+  ///        quadrupeds, at 0.075: long thin tails 0.11 to 0.28, ears 0.2 to
+  ///        0.44, tufted or club tails 0.43 and 0.51 (the triceratops', the
+  ///        bull's: 0.28 and 0.29 at 0.15), a thick tail (384) 0.6 (0.45 at
+  ///        0.15, not found), flanks 0.7 and more, the middle of a camel's
+  ///        leg 0.72 (0.43 at 0.15, beyond half its depth; its foot
+  ///        landmark outside apart).
   double largestBallShare = 0.32;
   /// \brief A cone where at least this many models have exactly one
   ///        protrusion nearest to the same landmark (1 or more).
@@ -44,15 +58,21 @@ struct Protrusion
   int nearestFeature = -1; ///< The feature whose landmark is nearest to the tip (its root).
   double depth = 0.0;      ///< The tip's distance from the nearest landmark, over sqrt(area).
   double ballShare = 0.0;  ///< Its ball's area over the flat disk's.
+  double ballRadius = 0.0; ///< The radius of that ball (the first that told it), over sqrt(area).
 };
 
 /// \brief The landmark-free protrusions of `surface`: tips (vertices the
 ///        farthest from every landmark within `peakRadius`, at least
-///        `leastDepth` away) whose ball of `ballRadius` holds less than
-///        `largestBallShare` of a flat disk, farthest first.
+///        `leastDepth` away) with a ball of `ballRadius` x 1, 2, 4, ...
+///        (`ballScales` of them, the larger up to half the tip's depth)
+///        that holds less
+///        than `largestBallShare` of a flat disk and caps the surface,
+///        farthest first. A peak inside the ball of a deeper protrusion
+///        (a second bump of a tufted tail) is that protrusion.
 /// \pre `landmarks` are vertices of `surface`, none missing.
 /// Fails (Status) on an empty surface, a missing or out-of-range landmark
-/// or options out of range (lengths not positive, `leastModels` < 1).
+/// or options out of range (lengths not positive, `ballScales` outside 1
+/// to 8, `leastModels` < 1).
 Status findProtrusions(const TriangleMesh& surface, const LandmarkList& landmarks,
   std::vector<Protrusion>& protrusions, const ProtrusionConeOptions& options = {});
 
@@ -70,6 +90,17 @@ struct ProtrusionConeReport
   /// \brief Per cone, that triangle, in the L0 built from the files'
   ///        landmarks.
   std::vector<int> splitTriangles;
+  /// \brief A protrusion that got no cone because the models disagree
+  ///        where it leaves the body.
+  struct Disagreement
+  {
+    int root = -1;          ///< The protrusion's root feature.
+    int model = -1;         ///< A model whose tip lies elsewhere.
+    int triangle = -1;      ///< The base triangle holding that tip.
+    int splitTriangle = -1; ///< The triangle the cone would have split.
+  };
+  /// \brief Each such protrusion (the first model that disagreed).
+  std::vector<Disagreement> disagreeing;
 };
 
 /// \brief Builds L0 from model `baseDomainModel` with a cone at the tip of
@@ -88,7 +119,12 @@ struct ProtrusionConeReport
 /// has one and traces over it), so its star is a thin fan up the protrusion to the landmarks
 /// round its root. Joined by decimation instead, a tail curled back to
 /// the hind legs got a cone joined across the body, and the maps folded
-/// at the tip (Documentation/known-issues.md, the map's section). Where
+/// at the tip (Documentation/known-issues.md, the map's section). A cone
+/// is added only where every model with the protrusion has its tip in the
+/// split triangle or one sharing an edge with it (`disagreeing` lists the
+/// others: a tail raised where the others' hang would have to be turned
+/// round its root across two curves by the map, which did not settle).
+/// Where
 /// two cones' tips lie in one base triangle only the one more models have
 /// is added. Without cones, `domain` is that L0 and `landmarks` are
 /// unchanged.
