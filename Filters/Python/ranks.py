@@ -17,6 +17,7 @@ mpi4py (Debian's python3-mpi4py) carries the messages; it is imported only
 when an MPI launcher started this process with more than one rank."""
 
 import array
+import atexit
 import os
 import time
 
@@ -234,7 +235,37 @@ def this_job():
         raise SystemExit("consistent-remesh: started by an MPI launcher with several ranks, but mpi4py cannot be "
                          "imported (%s): install python3-mpi4py, or run one process" % error)
     communicator = MPI.COMM_WORLD
+    _serial_vtk_controller()
     return MPIRanks(communicator) if communicator.Get_size() > 1 else SingleProcess()
+
+
+# The serial controller VTK gets instead of pvbatch's (kept alive here).
+_SERIAL_CONTROLLER = []
+
+
+def _serial_vtk_controller():
+    """The ranks talk through mpi4py, and each filter runs on one rank's
+    data (the collection's remesh, PCA and blends on rank 0 alone). Started
+    as `pvbatch --symmetric`, VTK's global controller spans the ranks
+    instead, and a filter's collective checks over it (the Semi-Regular
+    Remesher's) wait forever for ranks that never call them: VTK gets a
+    serial controller."""
+    try:
+        from vtkmodules.vtkParallelCore import vtkDummyController, vtkMultiProcessController
+    except ImportError:
+        return
+    controller = vtkMultiProcessController.GetGlobalController()
+    if controller is None or controller.GetNumberOfProcesses() <= 1:
+        return
+    serial = vtkDummyController()
+    _SERIAL_CONTROLLER.extend([serial, controller])
+    vtkMultiProcessController.SetGlobalController(serial)
+    # The script ends in sys.exit, which leaves pvbatch before it finalizes
+    # MPI through its controller: this process does it then.
+    def finalize():
+        vtkMultiProcessController.SetGlobalController(controller)
+        controller.Finalize()
+    atexit.register(finalize)
 
 
 def default_jobs(ranks):

@@ -54,6 +54,7 @@ from cmp_test_support import (
 
 COMMAND = None
 MPIEXEC = None
+PVBATCH = None
 DATA = None
 PICTURES = False
 KEEP_PICTURES = None
@@ -1328,10 +1329,11 @@ def case_reproducible_files(tmp):
 
 def case_models_in_parallel(tmp):
     """Issue 28: the models run at once, in child processes (--jobs) or
-    over MPI ranks (mpiexec -np 2 consistent-remesh), give the files of one
-    process running one model at a time, byte for byte but for
-    timings.json; a model that crashes on either rank fails alone, the
-    others are remeshed and rank 0 writes the report."""
+    over MPI ranks (mpiexec -np 2 consistent-remesh, or under pvbatch
+    --symmetric), give the files of one process running one model at a
+    time, byte for byte but for timings.json; a model that crashes on
+    either rank fails alone, the others are remeshed and rank 0 writes the
+    report."""
     import filecmp
 
     pairs = [(shrec(name, "off"), shrec(name, "vts")) for name in ("381", "391", "382", "384")]
@@ -1343,9 +1345,14 @@ def case_models_in_parallel(tmp):
     mpi = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
            "OMPI_MCA_rmaps_base_oversubscribe": "1"}
     runs = {}
-    for run, extra, launcher in (("one at a time", ["--jobs", "1"], ()),
-                                 ("two ranks", ["--jobs", "1"], (MPIEXEC, "-np", "2")),
-                                 ("three jobs", ["--jobs", "3"], ())):
+    launches = [("one at a time", ["--jobs", "1"], ()),
+                ("two ranks", ["--jobs", "1"], (MPIEXEC, "-np", "2")),
+                ("three jobs", ["--jobs", "3"], ())]
+    if PVBATCH:
+        # Started by pvbatch, VTK's controller spans the ranks: the remesh
+        # on rank 0 alone used to wait there for rank 1 forever.
+        launches.append(("two pvbatch ranks", ["--jobs", "1"], (MPIEXEC, "-np", "2", PVBATCH, "--symmetric")))
+    for run, extra, launcher in launches:
         status, stdout, stderr, report = run_cli(arguments + extra, out, environment=dict(crashes, **mpi),
                                                  launcher=launcher)
         check(report is not None, "%s: no report.json (status %d, stdout: %s, stderr: %s)" % (run, status, stdout[-2000:], stderr))
@@ -1364,7 +1371,7 @@ def case_models_in_parallel(tmp):
                       for root, _, names in os.walk(folder) for name in names)
 
     first = runs["one at a time"]
-    for run in ("two ranks", "three jobs"):
+    for run in [name for name, _, _ in launches[1:]]:
         check_equal(files(runs[run]), files(first), "the files written by %s and by one model at a time" % run)
         # --jobs 3 is in the command that the reports quote.
         quoting = ("report.json", "report.md", "report.html") if run == "three jobs" else ()
@@ -2127,17 +2134,19 @@ CASES = {
 
 
 def main():
-    global COMMAND, MPIEXEC, DATA, PICTURES, KEEP_PICTURES
+    global COMMAND, MPIEXEC, PVBATCH, DATA, PICTURES, KEEP_PICTURES
     parser = argparse.ArgumentParser()
     parser.add_argument("--command", required=True)
     parser.add_argument("--data")
     parser.add_argument("--mpiexec", help="the MPI launcher (models-in-parallel needs it)")
+    parser.add_argument("--pvbatch", help="pvbatch (models-in-parallel also runs the command under it, --symmetric)")
     parser.add_argument("--pictures", action="store_true", help="a display is there: the pictures must be made")
     parser.add_argument("--keep-pictures", metavar="DIR", help="copy the checked pictures to DIR")
     parser.add_argument("case", choices=sorted(CASES))
     args = parser.parse_args()
     COMMAND = args.command
     MPIEXEC = args.mpiexec
+    PVBATCH = args.pvbatch
     if args.case == "models-in-parallel":
         check(MPIEXEC and os.access(MPIEXEC, os.X_OK), "this case needs --mpiexec")
     DATA = args.data
