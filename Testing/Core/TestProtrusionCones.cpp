@@ -87,6 +87,35 @@ TriangleMesh spikedSphere(double radius, double length, double club = 0.0)
   return revolved(profile, 32);
 }
 
+/// Models with their surfaces and landmark lists side by side, as the
+/// collection entries take them (the surfaces point into `models`).
+struct Collection
+{
+  std::vector<test::LandmarkedModel> models;
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+};
+
+Collection collectionOf(std::vector<test::LandmarkedModel> models)
+{
+  Collection c;
+  c.models = std::move(models);
+  for (const test::LandmarkedModel& model : c.models)
+  {
+    c.surfaces.push_back(&model.data.mesh);
+    c.landmarks.push_back(model.landmarks);
+  }
+  return c;
+}
+
+Collection namedCollection(std::initializer_list<const char*> names)
+{
+  std::vector<test::LandmarkedModel> models;
+  for (const char* name : names)
+    models.push_back(test::landmarkedRealModel(name));
+  return collectionOf(std::move(models));
+}
+
 } // namespace
 
 TEST(ProtrusionCones, ASpikeIsAProtrusionAtItsTipNotInItsMiddleAndAClubbedOneWithinALargerBall)
@@ -149,15 +178,11 @@ TEST(ProtrusionCones, FindTheTailsOfTheFourLeggedModelsThatHaveOne)
 TEST(ProtrusionCones, ATailTheCollectionSharesGetsAConeInTheBaseTriangleHoldingItsTip)
 {
   CMP_REQUIRE_SHARED_DATA();
-  const std::vector<test::LandmarkedModel> models = test::landmarkedRealModels();
+  Collection c = collectionOf(test::landmarkedRealModels());
+  const std::vector<test::LandmarkedModel>& models = c.models;
   ASSERT_GE(models.size(), 11u);
-  std::vector<const TriangleMesh*> surfaces;
-  std::vector<LandmarkList> landmarks;
-  for (const test::LandmarkedModel& model : models)
-  {
-    surfaces.push_back(&model.data.mesh);
-    landmarks.push_back(model.landmarks);
-  }
+  std::vector<const TriangleMesh*>& surfaces = c.surfaces;
+  std::vector<LandmarkList>& landmarks = c.landmarks;
   const int from = static_cast<int>(
     std::find_if(models.begin(), models.end(), [](const auto& m) { return m.name == "381"; }) - models.begin());
   BaseDomain domain;
@@ -203,16 +228,9 @@ TEST(ProtrusionCones, NoConeWhereTheModelsDisagreeWhereTheProtrusionLeavesTheBod
   // Over L0 built from 381, 385's tail tip lies in base triangle 8-13-14,
   // 388's in 12-13-6: they share landmark 13 only, so 388's map would have
   // to turn its tail round 13 across two curves to reach a cone in 385's.
-  std::vector<test::LandmarkedModel> models;
-  for (const char* name : { "381", "385", "388" })
-    models.push_back(test::landmarkedRealModel(name));
-  std::vector<const TriangleMesh*> surfaces;
-  std::vector<LandmarkList> landmarks;
-  for (const test::LandmarkedModel& model : models)
-  {
-    surfaces.push_back(&model.data.mesh);
-    landmarks.push_back(model.landmarks);
-  }
+  Collection c = namedCollection({ "381", "385", "388" });
+  std::vector<const TriangleMesh*>& surfaces = c.surfaces;
+  std::vector<LandmarkList>& landmarks = c.landmarks;
   BaseDomain domain;
   ProtrusionConeReport report;
   ASSERT_TRUE(addProtrusionCones(surfaces, landmarks, 0, domain, {}, &report).ok());
@@ -246,16 +264,10 @@ TEST(ProtrusionCones, AGivenBaseDomainKeepsItsTrianglesButTheOneHoldingMostTips)
     given.featureIds.push_back(v);
   ASSERT_TRUE(checkBaseDomain(given, 21).ok());
 
-  std::vector<test::LandmarkedModel> models;
-  for (const char* name : { "381", "383", "385", "388" })
-    models.push_back(test::landmarkedRealModel(name));
-  std::vector<const TriangleMesh*> surfaces;
-  std::vector<LandmarkList> landmarks;
-  for (const test::LandmarkedModel& model : models)
-  {
-    surfaces.push_back(&model.data.mesh);
-    landmarks.push_back(model.landmarks);
-  }
+  Collection c = namedCollection({ "381", "383", "385", "388" });
+  const std::vector<test::LandmarkedModel>& models = c.models;
+  std::vector<const TriangleMesh*>& surfaces = c.surfaces;
+  std::vector<LandmarkList>& landmarks = c.landmarks;
   BaseDomain domain;
   ProtrusionConeReport report;
   const Status status = addProtrusionCones(surfaces, landmarks, given, domain, {}, &report);
