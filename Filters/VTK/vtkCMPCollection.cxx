@@ -3,13 +3,13 @@
 #include "vtkCMPPolyDataBridge.h"
 
 #include <vtkCompositeDataSet.h>
-
-#include <algorithm>
 #include <vtkDataObjectTreeIterator.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPolyData.h>
+
+#include <algorithm>
 
 namespace cmp::bridge
 {

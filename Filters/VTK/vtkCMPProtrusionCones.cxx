@@ -8,8 +8,8 @@
 
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
-#include <vtkIntArray.h>
 #include <vtkInformationVector.h>
+#include <vtkIntArray.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>

@@ -16,10 +16,9 @@
 /// field array `ProtrusionConeRoots` (per cone, its root feature) and
 /// `ProtrusionsWithoutCone` (root feature and model of each protrusion
 /// left without a cone because the models disagree where it leaves the
-/// body). Input 1
-/// (optional): a given L0 (point array `FeatureId`, one vertex per file
-/// feature); the cones then split its triangles, which it otherwise keeps,
-/// and `BaseDomainModel` is not used. Fails (vtkErrorMacro, both outputs
+/// body). Input 1 (optional): a given L0 (point array `FeatureId`, one
+/// vertex per file feature); the cones then split its triangles, which it
+/// otherwise keeps, and `BaseDomainModel` is not used. Fails (vtkErrorMacro, both outputs
 /// empty) naming the model when a surface or its landmarks do not fit,
 /// when the L0 model misses landmarks, when L0 cannot be built, or when
 /// the given L0 is not a base domain of the files' features.

@@ -157,12 +157,14 @@ Status findProtrusions(const TriangleMesh& surface, const LandmarkList& landmark
     // the tip's depth, so that they stay on the protrusion): the first that
     // holds less than the share and caps the surface (the landmarks
     // outside it all in one piece) makes the peak a protrusion.
-    double largest = options.ballRadius * unit;
-    for (int k = 1; k < options.ballScales && options.ballRadius * unit * std::pow(2.0, k) <= 0.5 * depth[v]; ++k)
-      largest = options.ballRadius * unit * std::pow(2.0, k);
-    const std::vector<double> ball = edgePathDistances(graph, { v }, largest);
-    for (double radius = options.ballRadius * unit; radius <= largest * (1.0 + 1e-12); radius *= 2.0)
+    const double smallest = options.ballRadius * unit;
+    int scales = 1;
+    while (scales < options.ballScales && smallest * std::pow(2.0, scales) <= 0.5 * depth[v])
+      ++scales;
+    const std::vector<double> ball = edgePathDistances(graph, { v }, smallest * std::pow(2.0, scales - 1));
+    for (int k = 0; k < scales; ++k)
     {
+      const double radius = smallest * std::pow(2.0, k);
       double inside = 0.0;
       for (int u = 0; u < n; ++u)
         if (ball[u] <= radius)
@@ -239,7 +241,7 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
   }
 
   // The base triangle whose patch holds `model`'s tip of `root` (-1 if the
-  // model cannot be traced over `base`, with the reason in `why`).
+  // model cannot be traced over `base`, with the reason in `untraced`).
   std::map<int, TracedNet> nets;
   std::map<int, std::string> untraced;
   const auto tipTriangle = [&](int model, int root) {
@@ -276,29 +278,25 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
   {
     if (count < options.leastModels)
       continue;
+    // Who chooses: the L0 model when it has the tip, else the models that
+    // have it; over a built L0 the first of them that traces decides.
+    std::vector<int> voters;
+    for (int m = 0; m < models; ++m)
+      if (tipOf[m].count(root))
+        voters.push_back(m);
     if (preferred >= 0 && tipOf[preferred].count(root))
-    {
-      const int triangle = tipTriangle(preferred, root);
-      if (triangle < 0 && untraced.count(preferred))
-        return Status::error(
-          "protrusion cones: model " + std::to_string(preferred) + ": " + untraced[preferred]);
-      if (triangle >= 0)
-        cones.push_back({ root, preferred, triangle, count });
-      continue;
-    }
+      voters = { preferred };
     std::map<int, int> votes;  // base triangle -> models
     std::map<int, int> firstOf; // base triangle -> the first model in it
-    for (int m = 0; m < models; ++m)
+    for (int m : voters)
     {
-      if (!tipOf[m].count(root))
-        continue;
       const int triangle = tipTriangle(m, root);
       if (triangle < 0)
         continue;
       ++votes[triangle];
       firstOf.emplace(triangle, m);
       if (preferred >= 0)
-        break; // built L0: the first model with the tip decides
+        break;
     }
     int best = -1;
     for (const auto& [triangle, n] : votes)
@@ -306,12 +304,10 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
         best = triangle;
     if (best < 0)
     {
-      if (preferred >= 0)
-      {
-        for (int m = 0; m < models; ++m)
-          if (untraced.count(m))
-            return Status::error("protrusion cones: model " + std::to_string(m) + ": " + untraced[m]);
-      }
+      // A built L0 fits its models: one that cannot be traced over it fails.
+      for (int m : voters)
+        if (preferred >= 0 && untraced.count(m))
+          return Status::error("protrusion cones: model " + std::to_string(m) + ": " + untraced[m]);
       continue; // no model with the tip fits the given L0: no cone
     }
     cones.push_back({ root, firstOf[best], best, count });
