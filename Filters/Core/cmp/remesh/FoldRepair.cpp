@@ -18,12 +18,12 @@ namespace
 {
 
 /// Directions tried around a vertex, and the step lengths tried, as
-/// fractions of its current shortest edge.
+/// fractions of its current shortest, mean and longest edge: in a band of
+/// needles the shortest edge is a needle's width, while the move that
+/// unfolds it runs along the needle.
 constexpr int kDirections = 16;
 constexpr double kStepFractions[] = { 0.05, 0.1, 0.2, 0.4, 0.8 };
-/// A vertex's reach is counted in its shortest edge, but never in more than
-/// this share of the remesh's median edge; a region's first reach is that
-/// share too.
+/// Reaches are counted in this share of the remesh's median edge.
 constexpr double kTypicalEdgeShare = 0.25;
 /// Shape quality below which a triangle counts as bad while repairing, so
 /// that unfolding never pays with a collapsed triangle.
@@ -325,21 +325,28 @@ bool tryShortMoves(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
   const ScoreOf& scoreOf, const Keeps& keeps)
 {
   const auto current = scoreOf(v);
-  double shortest = std::numeric_limits<double>::infinity();
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0.0, sum = 0.0;
   for (int w : mesh.neighbours(v))
-    shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
+  {
+    const double length = (mesh.position(w) - mesh.position(v)).norm();
+    shortest = std::min(shortest, length), longest = std::max(longest, length), sum += length;
+  }
+  if (mesh.neighbours(v).empty())
+    return false;
+  const double scales[] = { shortest, sum / static_cast<double>(mesh.neighbours(v).size()), longest };
   const Vec3 normal = mesh.normal(v);
   const Vec3 first = normal.unitOrthogonal(), second = normal.cross(first);
   const SurfacePoint start = mesh.point(v);
   SurfacePoint best = start;
   auto bestScore = current;
   bool moved = false;
+  for (double scale : scales)
   for (double fraction : kStepFractions)
     for (int k = 0; k < kDirections; ++k)
     {
       const double angle = 2.0 * kPi * k / kDirections;
       const SurfacePoint tried =
-        walkOnSurface(surface, start, fraction * shortest * (std::cos(angle) * first + std::sin(angle) * second));
+        walkOnSurface(surface, start, fraction * scale * (std::cos(angle) * first + std::sin(angle) * second));
       mesh.moveTo(v, tried);
       if ((mesh.position(v) - origin).norm() > reach)
         continue;
@@ -610,24 +617,6 @@ double medianEdgeLength(const FoldedRemesh& mesh)
   return lengths[lengths.size() / 2];
 }
 
-/// How far each vertex may go alone: `reach` shortest edges, but at most
-/// `reach` typical edges (a quarter of the median edge). Long edges mean a
-/// coarsely sampled part (a tip, a ridge), where moving a vertex by its own
-/// edge length would cut into the shape.
-std::vector<double> singleMoveReach(const FoldedRemesh& mesh, double reach, double typicalEdge)
-{
-  std::vector<double> result(mesh.vertexCount(), 0.0);
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-  {
-    double shortest = std::numeric_limits<double>::infinity();
-    for (int w : mesh.neighbours(v))
-      shortest = std::min(shortest, (mesh.position(w) - mesh.position(v)).norm());
-    if (std::isfinite(shortest))
-      result[v] = reach * std::min(shortest, typicalEdge);
-  }
-  return result;
-}
-
 /// Writes every vertex that left its sample's point back into `samples`,
 /// and counts those whose position changed.
 void writeBack(const FoldedRemesh& mesh, const std::vector<SurfacePoint>& placed,
@@ -748,6 +737,9 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
   if (options.regionWidening < 1 || options.regionWidening > kMostRegionWidening)
     return Status::error("fold repair: the region widening must be between 1 and " +
       std::to_string(kMostRegionWidening) + ", not " + std::to_string(options.regionWidening));
+  if (!(options.singleWidening >= 1.0 && options.singleWidening <= kMostRegionWidening))
+    return Status::error("fold repair: the single moves' widening must be between 1 and " +
+      std::to_string(kMostRegionWidening) + ", not " + std::to_string(options.singleWidening));
   FoldRepairReport result;
   result.foldedBefore = result.foldedAfter = countFoldedTriangles(remesh, surface, samples);
   FoldedRemesh mesh(remesh, surface, samples);
@@ -756,7 +748,11 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
   for (int v = 0; v < mesh.vertexCount(); ++v)
     origin.push_back(mesh.position(v)), placed.push_back(mesh.point(v));
   const double typicalEdge = kTypicalEdgeShare * medianEdgeLength(mesh);
-  const std::vector<double> reach = singleMoveReach(mesh, options.reach, typicalEdge);
+  // How far a vertex may go alone: a fixed share of the median edge, not
+  // of its own edges (in a band of needles its shortest edge is a needle's
+  // width, and no move within that unfolds the band; a long edge is a
+  // coarsely sampled tip, where a move that long would cut into the shape).
+  const double singleReach = options.singleWidening * options.reach * typicalEdge;
   if (result.foldedBefore > 0)
   {
     // Regions first: single moves made first settle into a state where a
@@ -770,7 +766,7 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
     {
       bool any = false;
       for (int v : mesh.verticesOfFoldedTriangles())
-        any = improveVertex(surface, mesh, v, origin[v], reach[v]) || any;
+        any = improveVertex(surface, mesh, v, origin[v], singleReach) || any;
       if (!any)
         break;
     }
@@ -804,7 +800,7 @@ Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, s
     {
       bool any = false;
       for (int v : vertices)
-        any = unflipVertex(surface, mesh, v, origin[v], reach[v], query, flat) || any;
+        any = unflipVertex(surface, mesh, v, origin[v], singleReach, query, flat) || any;
       result.centroidFlipsAfter = collect();
       if (!any)
         break;

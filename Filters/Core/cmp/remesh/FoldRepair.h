@@ -19,10 +19,9 @@ struct FoldRepairOptions
   /// \brief Sweeps over the vertices of folded triangles at most.
   int maximumSweeps = 20;
   /// \brief How far a vertex may go from where its parameterization put
-  ///        it: this many times its shortest remesh edge (as placed) when
-  ///        it moves alone, never more than this many quarters of the
-  ///        remesh's median edge; the same quarters of the median edge
-  ///        when it first moves with its region. 0: nothing moves.
+  ///        it when it first moves with its region, in quarters of the
+  ///        remesh's median edge (2: half of one); see `regionWidening`
+  ///        and `singleWidening` for the farther moves. 0: nothing moves.
   double reach = 2.0;
   /// \brief Where moving regions within `reach` quarters of the median
   ///        edge leaves folds, the regions around the remaining ones try
@@ -36,6 +35,15 @@ struct FoldRepairOptions
   ///        edges by default). 1 to 64; 1: regions never go beyond the
   ///        first reach.
   int regionWidening = 4;
+  /// \brief Single vertices (after the regions, and in the centroid pass)
+  ///        go up to this many times `reach` quarters of the median edge
+  ///        (by default one median edge), in steps of their shortest, mean
+  ///        and longest remesh edge. In a band of needles a vertex's
+  ///        shortest edge is a needle's width, and the move that unfolds
+  ///        the band runs along the needles: counted in the shortest edge
+  ///        (until December 2026) the moves stayed within it and left such
+  ///        folds. 1 to 64.
+  double singleWidening = 2.0;
   /// \brief Then move single vertices of triangles flipped by the centroid
   ///        criterion (`centroidFlippedTriangles()`: the surface nearest to
   ///        the triangle's middle faces the other way, at the rim of an ear
@@ -139,7 +147,7 @@ std::vector<int> foldsNearLandmarks(
 /// not fit `remesh` and `surface` (not one per vertex, a triangle or vertex
 /// the surface does not have or has removed, weights that are not
 /// barycentric in their triangle) or an option is out of range (`reach` or
-/// `maximumSweeps` negative, `regionWidening` outside 1 to 64).
+/// `maximumSweeps` negative, `regionWidening` or `singleWidening` outside 1 to 64).
 Status repairFolds(const SemiRegularMesh& remesh, const EditableMesh& surface, std::vector<SurfacePoint>& samples,
   const FoldRepairOptions& options = {}, FoldRepairReport* report = nullptr);
 
