@@ -215,10 +215,11 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
   const BaseDomain domain = test::realBaseDomain("381");
   SemiRegularMesh remesh;
   ASSERT_TRUE(buildSemiRegularMesh(domain, 5, remesh).ok());
-  // Measured at level 5 with L0 from 381: 417 -> 6 on Spot (its two thin
-  // wedge patches keep the rest), 59 -> 0 on 391; without widening the
-  // regions' reach, 8 and 4; with single moves before the regions' moves
-  // (the order until November 2026), 15 and 1.
+  // Measured at level 5 with L0 from 381: 417 -> 5 on Spot (its two thin
+  // wedge patches keep the rest; 6 with single moves within twice a
+  // vertex's shortest edge, until December 2026), 59 -> 0 on 391; without
+  // widening the regions' reach, 6 and 2; with single moves before the
+  // regions' moves (the order until November 2026), 15 and 1.
   for (const std::string name : { "spot", "391" })
   {
     const test::LandmarkedModel model = test::landmarkedRealModel(name);
