@@ -28,6 +28,18 @@ std::vector<int> neighboursOf(const SemiRegularMesh& remesh, int v)
   return around;
 }
 
+/// The median length of the remesh's triangle sides at `positions` (an
+/// inner edge counted once from each of its two triangles).
+double medianEdgeLength(const SemiRegularMesh& remesh, const std::vector<Vec3>& positions)
+{
+  std::vector<double> lengths;
+  for (const Triangle& tri : remesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      lengths.push_back((positions[tri[(k + 1) % 3]] - positions[tri[k]]).norm());
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
 /// Samples, positions and folds of a remesh placed on a parameterized model.
 struct Placed
 {
@@ -92,12 +104,7 @@ TEST(FoldRepair, UnfoldsAVertexPushedAcrossItsNeighbourWithinReach)
   const std::vector<Vec3> given = samplePositions(model.net, tangled);
   const std::vector<Vec3> repaired = samplePositions(model.net, samples);
   EXPECT_NE(repaired[v], given[v]) << "the misplaced vertex stayed";
-  std::vector<double> lengths;
-  for (const Triangle& tri : remesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      lengths.push_back((given[tri[(k + 1) % 3]] - given[tri[k]]).norm());
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  const double medianEdge = lengths[lengths.size() / 2];
+  const double medianEdge = medianEdgeLength(remesh, given);
   for (int u = 0; u < remesh.vertexCount(); ++u)
   {
     EXPECT_NEAR(repaired[u].norm(), 1.0, 0.01) << u;
@@ -237,12 +244,7 @@ TEST(FoldRepair, UnfoldsMostNeedleFoldsOnRealModelsAndStaysOnTheSurface)
     const std::vector<Vec3> repaired = samplePositions(parameterized.net, samples);
     const double diagonal = boundingBoxDiagonal(model.data.mesh);
     const ClosestPointQuery input(model.data.mesh);
-    std::vector<double> lengths;
-    for (const Triangle& tri : remesh.triangles)
-      for (int k = 0; k < 3; ++k)
-        lengths.push_back((placed.positions[tri[(k + 1) % 3]] - placed.positions[tri[k]]).norm());
-    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-    const double medianEdge = lengths[lengths.size() / 2];
+    const double medianEdge = medianEdgeLength(remesh, placed.positions);
     int moved = 0;
     for (int v = 0; v < remesh.vertexCount(); ++v)
     {

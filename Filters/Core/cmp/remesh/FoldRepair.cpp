@@ -324,6 +324,8 @@ template <class ScoreOf, class Keeps>
 bool tryShortMoves(const EditableMesh& surface, FoldedRemesh& mesh, int v, const Vec3& origin, double reach,
   const ScoreOf& scoreOf, const Keeps& keeps)
 {
+  if (mesh.neighbours(v).empty())
+    return false;
   const auto current = scoreOf(v);
   double shortest = std::numeric_limits<double>::infinity(), longest = 0.0, sum = 0.0;
   for (int w : mesh.neighbours(v))
@@ -331,8 +333,6 @@ bool tryShortMoves(const EditableMesh& surface, FoldedRemesh& mesh, int v, const
     const double length = (mesh.position(w) - mesh.position(v)).norm();
     shortest = std::min(shortest, length), longest = std::max(longest, length), sum += length;
   }
-  if (mesh.neighbours(v).empty())
-    return false;
   const double scales[] = { shortest, sum / static_cast<double>(mesh.neighbours(v).size()), longest };
   const Vec3 normal = mesh.normal(v);
   const Vec3 first = normal.unitOrthogonal(), second = normal.cross(first);
