@@ -270,8 +270,9 @@ def _protrusion_cones(args, models, mine, ranks, report):
     next, from the models that have it), and a vertex of L0, built from
     --base-domain-from's model or the given --base-domain (whose triangle
     holding the tip is split). Returns L0 with the cones as text, or None
-    when there are none (not asked, files that miss landmarks, a surface
-    with a boundary, fewer than two models, or no protrusion shared). Every
+    when there are none (not asked, files that miss landmarks, closed and
+    open surfaces mixed, fewer than two models, or no protrusion shared;
+    a collection of surfaces with boundaries gets them on its open L0). Every
     rank learns the result; a failure is said and the run goes on without
     cones."""
     if not args.protrusion_cones:
@@ -279,8 +280,11 @@ def _protrusion_cones(args, models, mine, ranks, report):
     gathered = ranks.all_gather([(index, bool(model.report.get("missing_landmarks")), is_closed(model.surface))
                                  for index, model in mine if model.surface is not None])
     readable = {index: (misses, closed) for part in gathered for index, misses, closed in part}
+    # Open and closed models mixed: the ones that do not fit L0 fail later,
+    # alone; the cones are not worth a failure of the whole step for them.
     if (len(readable) < 2 or (args.base_domain is None and args.base_domain_from not in readable) or
-            any(misses or not closed for misses, closed in readable.values())):
+            any(misses for misses, _ in readable.values()) or
+            len({closed for _, closed in readable.values()}) > 1):
         return None
     order = sorted(readable)
     result = None

@@ -68,7 +68,7 @@ int vtkCMPProtrusionCones::RequestData(
     return fail(s.message());
   const std::size_t count = collection.surfaces.size();
   cmp::bridge::LandmarkedCollection read;
-  if (cmp::Status s = cmp::bridge::toLandmarkedCollection(collection, false, read); !s.ok())
+  if (cmp::Status s = cmp::bridge::toLandmarkedCollection(collection, true, read); !s.ok())
     return fail(s.message());
   const std::vector<const cmp::TriangleMesh*>& surfaces = read.surfaces;
   std::vector<cmp::LandmarkList>& landmarks = read.landmarks;
@@ -80,9 +80,16 @@ int vtkCMPProtrusionCones::RequestData(
   cmp::ProtrusionConeReport report;
   if (vtkPolyData* givenInput = vtkPolyData::GetData(inputVector[1]))
   {
-    cmp::BaseDomain given;
-    if (cmp::Status s = cmp::bridge::toBaseDomain(givenInput, given); !s.ok())
+    // An open L0 (surfaces with boundaries) is checked closed; the cones
+    // split triangles of the open one, which the closed one starts with.
+    cmp::BaseDomain closedGiven, given;
+    cmp::BaseDomainHoles holes;
+    if (cmp::Status s = cmp::bridge::toClosedBaseDomain(givenInput, closedGiven, holes); !s.ok())
       return fail("the base domain: " + s.message());
+    given = closedGiven;
+    given.mesh.points.resize(holes.openVertexCount);
+    given.featureIds.resize(holes.openVertexCount);
+    given.mesh.triangles.resize(holes.openTriangleCount);
     if (cmp::Status s = cmp::addProtrusionCones(surfaces, landmarks, given, domain, options, &report); !s.ok())
       return fail(s.message());
   }

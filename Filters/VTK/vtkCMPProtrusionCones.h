@@ -7,7 +7,8 @@
 ///        `cmp::addProtrusionCones()`).
 ///
 /// Input: the collection (a multiblock of landmarked surfaces, `FeatureId`
-/// and `FeatureCount`, as Missing Landmark Placer takes it). Output 0: the
+/// and `FeatureCount`, as Missing Landmark Placer takes it; closed, or all
+/// with holes, L0 then open). Output 0: the
 /// same surfaces, their `FeatureId` and `FeatureCount` holding the cones
 /// after the files' features (a model without the protrusion misses the
 /// cone's feature), and field arrays `ProtrusionTips` and

@@ -16,12 +16,42 @@
 #include <set>
 #include <fstream>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 using namespace cmp;
 
 namespace
 {
+
+/// Writes `open` for consistent-remesh into folder `dump`: NAME.off and
+/// NAME.vts (vertex and position per feature), and the open L0 its cut
+/// gives as base_domain.off (vertex f is feature f).
+void writeOpenModel(const test::OpenModel& open, const std::string& dump, const std::string& name)
+{
+  std::ofstream off(dump + "/" + name + ".off");
+  off.precision(17);
+  off << "OFF\n" << open.surface.vertexCount() << " " << open.surface.triangleCount() << " 0\n";
+  for (const Vec3& p : open.surface.points)
+    off << p.x() << " " << p.y() << " " << p.z() << "\n";
+  for (const Triangle& t : open.surface.triangles)
+    off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  std::ofstream vts(dump + "/" + name + ".vts");
+  vts.precision(17);
+  for (int l : open.landmarks)
+    vts << l << " " << open.surface.points[l].transpose() << "\n";
+  std::ofstream l0(dump + "/base_domain.off");
+  l0.precision(17);
+  l0 << "OFF\n" << open.domain.mesh.vertexCount() << " " << open.domain.mesh.triangleCount() << " 0\n";
+  std::vector<int> baseOf(open.domain.mesh.vertexCount());
+  for (int v = 0; v < open.domain.mesh.vertexCount(); ++v)
+    baseOf[open.domain.featureIds[v]] = v;
+  for (int f = 0; f < open.domain.mesh.vertexCount(); ++f)
+    l0 << open.domain.mesh.points[baseOf[f]].transpose() << "\n";
+  for (const Triangle& t : open.domain.mesh.triangles)
+    l0 << "3 " << open.domain.featureIds[t[0]] << " " << open.domain.featureIds[t[1]] << " "
+       << open.domain.featureIds[t[2]] << "\n";
+}
 
 /// Whether (a, b) is an edge of a triangle of `mesh` in that direction.
 bool hasDirectedEdge(const TriangleMesh& mesh, int a, int b)
@@ -306,31 +336,7 @@ TEST(OpenSurface, OpenFourLeggedModelsRemeshWithTheirBoundaryOnTheirs)
     const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, domain, feature, radius, open);
   ASSERT_TRUE(cut.ok()) << cut.message();
     if (const char* dump = std::getenv("CMP_OPEN_DUMP"))
-    {
-      std::ofstream off(std::string(dump) + "/" + name + ".off");
-      off.precision(17);
-      off << "OFF\n" << open.surface.vertexCount() << " " << open.surface.triangleCount() << " 0\n";
-      for (const Vec3& p : open.surface.points)
-        off << p.x() << " " << p.y() << " " << p.z() << "\n";
-      for (const Triangle& t : open.surface.triangles)
-        off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-      std::ofstream vts(std::string(dump) + "/" + name + ".vts");
-      vts.precision(17);
-      for (int l : open.landmarks)
-        vts << l << " " << open.surface.points[l].transpose() << "\n";
-      std::ofstream l0(std::string(dump) + "/base_domain.off");
-      l0.precision(17);
-      l0 << "OFF\n" << open.domain.mesh.vertexCount() << " " << open.domain.mesh.triangleCount() << " 0\n";
-      std::vector<Vec3> byFeature(open.domain.mesh.vertexCount());
-      std::vector<int> baseOf(open.domain.mesh.vertexCount());
-      for (int v = 0; v < open.domain.mesh.vertexCount(); ++v)
-        baseOf[open.domain.featureIds[v]] = v;
-      for (int f = 0; f < open.domain.mesh.vertexCount(); ++f)
-        l0 << open.domain.mesh.points[baseOf[f]].transpose() << "\n";
-      for (const Triangle& t : open.domain.mesh.triangles)
-        l0 << "3 " << open.domain.featureIds[t[0]] << " " << open.domain.featureIds[t[1]] << " "
-           << open.domain.featureIds[t[2]] << "\n";
-    }
+      writeOpenModel(open, dump, name);
     if (openDomain.mesh.triangles.empty())
     {
       BaseDomainBuilderReport built;
@@ -382,6 +388,43 @@ TEST(OpenSurface, OpenFourLeggedModelsRemeshWithTheirBoundaryOnTheirs)
     // known-issues.md, "Surfaces with boundaries").
     EXPECT_LE(result.figures.foldedAfterRepair, name == "385" ? 4 : 1);
     EXPECT_LE(result.figures.centroidFlips, name == "385" ? 20 : 10);
+  }
+}
+
+// Writes open models for consistent-remesh and nothing else, when
+// CMP_OPEN_DUMP names a folder (CMP_OPEN_FEATURE, CMP_OPEN_RADIUS and
+// CMP_OPEN_MODELS as above; the default models 381, 383 and 385, cut round
+// the middle of the back): the command's tests of open collections
+// (python.CLI.OpenProtrusionCones) take them from there.
+TEST(OpenSurface, WriteOpenModelsForTheCommand)
+{
+  const char* dump = std::getenv("CMP_OPEN_DUMP");
+  if (!dump)
+    GTEST_SKIP() << "CMP_OPEN_DUMP names no folder";
+  CMP_REQUIRE_SHARED_DATA();
+  const BaseDomain domain = test::realBaseDomain("381");
+  const int feature = std::getenv("CMP_OPEN_FEATURE") ? std::atoi(std::getenv("CMP_OPEN_FEATURE")) : 12;
+  const double radius = std::getenv("CMP_OPEN_RADIUS") ? std::atof(std::getenv("CMP_OPEN_RADIUS")) : 0.4;
+  std::vector<std::string> names{ "381", "383", "385" };
+  if (std::getenv("CMP_OPEN_MODELS"))
+  {
+    names.clear();
+    std::istringstream list(std::getenv("CMP_OPEN_MODELS"));
+    for (std::string name; list >> name;)
+      names.push_back(name);
+  }
+  std::error_code made;
+  std::filesystem::create_directories(dump, made);
+  ASSERT_FALSE(made) << "could not make " << dump << ": " << made.message();
+  for (const std::string& name : names)
+  {
+    const test::LandmarkedModel model = test::landmarkedRealModel(name);
+    test::OpenModel open;
+    const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, domain, feature, radius, open);
+    ASSERT_TRUE(cut.ok()) << name << ": " << cut.message();
+    writeOpenModel(open, dump, name);
+    std::ifstream written(std::string(dump) + "/" + name + ".vts");
+    ASSERT_TRUE(written.good()) << "could not write " << dump << "/" << name << ".vts";
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <cmp/basedomain/BaseDomainBuilder.h>
 #include <cmp/layout/NetTracer.h>
+#include <cmp/layout/OpenSurface.h>
+#include <cmp/mesh/BoundaryLoops.h>
 #include <cmp/mesh/EdgePaths.h>
 
 #include <algorithm>
@@ -95,6 +97,11 @@ Status findProtrusions(const TriangleMesh& surface, const LandmarkList& landmark
   const double unit = std::sqrt(surfaceArea(surface));
   if (!(unit > 0.0))
     return Status::error("protrusion cones: the surface has no area");
+  // On a surface with boundaries no tip lies on a boundary: a landmark
+  // there would be a boundary landmark, which L0 has only on its holes.
+  std::vector<char> onBoundary;
+  if (Status s = boundaryVertices(surface, onBoundary); !s.ok())
+    return Status::error("protrusion cones: " + s.message());
   const EdgeGraph graph = edgeGraph(surface);
   const int n = graph.vertexCount();
   std::vector<int> parent;
@@ -128,7 +135,7 @@ Status findProtrusions(const TriangleMesh& surface, const LandmarkList& landmark
   std::vector<int> candidates;
   for (int v = 0; v < n; ++v)
   {
-    if (!std::isfinite(depth[v]) || depth[v] < options.leastDepth * unit)
+    if (!std::isfinite(depth[v]) || depth[v] < options.leastDepth * unit || onBoundary[v])
       continue;
     bool highest = true;
     for (int a = graph.first[v]; a < graph.first[v + 1] && highest; ++a)
@@ -185,6 +192,18 @@ Status findProtrusions(const TriangleMesh& surface, const LandmarkList& landmark
 namespace
 {
 
+/// `checkBaseDomain()` of `domain`, or of it with its holes closed when it
+/// has boundary loops (`closeBaseDomain()`, which checks the closed one).
+Status checkAnyBaseDomain(const BaseDomain& domain, int features)
+{
+  if (static_cast<int>(domain.featureIds.size()) != features)
+    return Status::error("L0 has " + std::to_string(domain.featureIds.size()) + " features, not " +
+      std::to_string(features));
+  BaseDomain closed;
+  BaseDomainHoles holes;
+  return closeBaseDomain(domain, closed, holes);
+}
+
 /// The checks both entries share: one landmark list per surface, each of
 /// `features` entries that fit its surface.
 Status checkCollection(const std::vector<const TriangleMesh*>& surfaces, const std::vector<LandmarkList>& landmarks,
@@ -219,6 +238,25 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
   const int models = static_cast<int>(surfaces.size());
   const std::size_t features = base.featureIds.size();
 
+  // Surfaces with boundaries are traced closed, as every stage runs them
+  // (OpenSurface.h): each hole of L0 and of the surfaces capped, the caps'
+  // curves given. The open L0's triangles come first in the closed one, so
+  // a patch below `openTriangles` is the open L0's triangle.
+  BaseDomain closedBase;
+  BaseDomainHoles holes;
+  if (Status s = closeBaseDomain(base, closedBase, holes); !s.ok())
+    return Status::error("protrusion cones: " + s.message());
+  const int openTriangles = base.mesh.triangleCount();
+  for (int m = 0; m < models; ++m)
+  {
+    std::vector<std::vector<int>> loops;
+    if (Status s = boundaryLoops(*surfaces[m], loops); !s.ok())
+      return Status::error("protrusion cones: model " + std::to_string(m) + ": " + s.message());
+    if (loops.size() != holes.loops.size())
+      return Status::error("protrusion cones: model " + std::to_string(m) + " has " + std::to_string(loops.size()) +
+        " boundary loops, L0 " + std::to_string(holes.loops.size()));
+  }
+
   // Per model, the tip nearest to each feature where it has exactly one.
   out.protrusions.assign(models, {});
   std::vector<std::map<int, int>> tipOf(models);
@@ -232,8 +270,14 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
     std::map<int, int> count;
     for (const Protrusion& p : out.protrusions[m])
       ++count[p.nearestFeature];
+    // A protrusion nearest to a boundary landmark leaves the body where the
+    // surface was cut, not at a feature of it: no cone. Cut round the top
+    // of the head, each ear is nearest to a boundary landmark, another on
+    // each model, and 4 cones found on 2 or 3 models each left none with
+    // every feature (the ears by one head landmark of a whole animal get
+    // none either: two protrusions by one root).
     for (const Protrusion& p : out.protrusions[m])
-      if (count[p.nearestFeature] == 1)
+      if (count[p.nearestFeature] == 1 && !holes.onBoundary(p.nearestFeature))
       {
         tipOf[m][p.nearestFeature] = p.vertex;
         ++modelsWith[p.nearestFeature];
@@ -249,7 +293,18 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
       return -1;
     if (!nets.count(model))
     {
-      if (Status s = traceFeatureNet(*surfaces[model], landmarks[model], base, nets[model]); !s.ok())
+      TriangleMesh closed;
+      LandmarkList closedLandmarks;
+      SurfaceHoles surfaceHoles;
+      NetTracerOptions tracing;
+      Status s = closeSurface(*surfaces[model], landmarks[model], holes, closed, closedLandmarks, surfaceHoles);
+      if (s.ok())
+      {
+        tracing.presetCurves = surfaceHoles.curves;
+        s = holes.empty() ? traceFeatureNet(*surfaces[model], landmarks[model], base, nets[model])
+                          : traceFeatureNet(closed, closedLandmarks, closedBase, nets[model], tracing);
+      }
+      if (!s.ok())
       {
         nets.erase(model);
         untraced[model] = s.message();
@@ -262,11 +317,12 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
     for (int t = 0; t < net.mesh.triangleCount(); ++t)
     {
       const Triangle& tri = net.mesh.triangle(t);
-      if (std::find(tri.begin(), tri.end(), tip) != tri.end() &&
-        (triangle < 0 || net.patchOfTriangle[t] < triangle))
-        triangle = net.patchOfTriangle[t];
+      const int patch = net.patchOfTriangle[t];
+      if (std::find(tri.begin(), tri.end(), tip) != tri.end() && patch < openTriangles &&
+        (triangle < 0 || patch < triangle))
+        triangle = patch;
     }
-    return triangle; // -1 not expected: every input vertex keeps its triangles' patches
+    return triangle; // -1 not expected: a tip is never on a boundary, so never in a cap
   };
 
   struct Cone
@@ -325,31 +381,82 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
       shared += std::count(base.mesh.triangles[t].begin(), base.mesh.triangles[t].end(), u) > 0 ? 1 : 0;
     return shared >= 2;
   };
+  // Where the chosen triangle leaves a model apart, another may have every
+  // tip in it or beside it (two models' tips in triangles that share only
+  // the root, with one between them): the one that holds the most tips.
   std::vector<Cone> agreed;
-  for (const Cone& c : cones)
+  for (Cone c : cones)
   {
-    bool agree = true;
-    for (int m = 0; m < models && agree; ++m)
+    std::vector<std::pair<int, int>> tips; // model, its tip's base triangle
+    for (int m = 0; m < models; ++m)
+      if (tipOf[m].count(c.root))
+        if (const int triangle = tipTriangle(m, c.root); triangle >= 0)
+          tips.emplace_back(m, triangle);
+    // The first tip neither in `t` nor beside it (-1: none).
+    const auto apartFrom = [&](int t) {
+      for (std::size_t i = 0; i < tips.size(); ++i)
+        if (!sharesEdge(tips[i].second, t))
+          return static_cast<int>(i);
+      return -1;
+    };
+    const int apart = apartFrom(c.triangle);
+    if (apart >= 0)
     {
-      if (!tipOf[m].count(c.root))
+      int best = -1, bestInside = -1;
+      for (int t = 0; t < base.mesh.triangleCount(); ++t)
+      {
+        if (apartFrom(t) >= 0)
+          continue;
+        const int inside = static_cast<int>(std::count_if(
+          tips.begin(), tips.end(), [&](const std::pair<int, int>& tip) { return tip.second == t; }));
+        if (inside > bestInside)
+        {
+          best = t;
+          bestInside = inside;
+        }
+      }
+      if (best < 0)
+      {
+        out.disagreeing.push_back({ c.root, tips[apart].first, tips[apart].second, c.triangle });
         continue;
-      const int triangle = tipTriangle(m, c.root);
-      agree = triangle < 0 || sharesEdge(triangle, c.triangle);
-      if (!agree)
-        out.disagreeing.push_back({ c.root, m, triangle, c.triangle });
+      }
+      c.triangle = best;
+      c.model = tips.front().first;
+      for (const auto& [m, triangle] : tips)
+        if (triangle == best)
+        {
+          c.model = m;
+          break;
+        }
     }
-    if (agree)
-      agreed.push_back(c);
+    agreed.push_back(c);
   }
   cones = std::move(agreed);
   // One cone per base triangle: the one more models have.
   std::sort(cones.begin(), cones.end(), [](const Cone& a, const Cone& b) {
     return a.count != b.count ? a.count > b.count : a.root < b.root;
   });
+  // And only while some model has every cone kept (it has every feature,
+  // so the Missing Landmark Placer can build its reduced L0 from it): two
+  // cones on two sets of models apart would leave the whole collection
+  // unplaced.
   std::vector<Cone> kept;
+  std::vector<char> complete(models, 0); // has every feature and every cone kept so far
+  for (int m = 0; m < models; ++m)
+    complete[m] = missingLandmarkCount(landmarks[m]) == 0;
   for (const Cone& c : cones)
-    if (std::none_of(kept.begin(), kept.end(), [&](const Cone& k) { return k.triangle == c.triangle; }))
-      kept.push_back(c);
+  {
+    if (std::any_of(kept.begin(), kept.end(), [&](const Cone& k) { return k.triangle == c.triangle; }))
+      continue;
+    bool someone = false;
+    for (int m = 0; m < models; ++m)
+      someone = someone || (complete[m] && tipOf[m].count(c.root));
+    if (!someone)
+      continue;
+    for (int m = 0; m < models; ++m)
+      complete[m] = complete[m] && tipOf[m].count(c.root);
+    kept.push_back(c);
+  }
   std::sort(kept.begin(), kept.end(), [](const Cone& a, const Cone& b) { return a.root < b.root; });
 
   domain = base;
@@ -373,7 +480,7 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
   triangles.insert(triangles.end(), domain.mesh.triangles.begin() + base.mesh.triangleCount(),
     domain.mesh.triangles.end());
   domain.mesh.triangles = std::move(triangles);
-  if (Status s = checkBaseDomain(domain, static_cast<int>(features + kept.size())); !s.ok())
+  if (Status s = checkAnyBaseDomain(domain, static_cast<int>(features + kept.size())); !s.ok())
     return Status::error("protrusion cones: internal error: " + s.message());
 
   for (int m = 0; m < models; ++m)
@@ -422,7 +529,7 @@ Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std:
   if (Status s = checkOptions(options); !s.ok())
     return s;
   const std::size_t features = given.featureIds.size();
-  if (Status s = checkBaseDomain(given, static_cast<int>(features)); !s.ok())
+  if (Status s = checkAnyBaseDomain(given, static_cast<int>(features)); !s.ok())
     return Status::error("protrusion cones: the given L0: " + s.message());
   if (Status s = checkCollection(surfaces, landmarks, features, "the given L0"); !s.ok())
     return s;

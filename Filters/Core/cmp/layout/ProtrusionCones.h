@@ -68,7 +68,9 @@ struct Protrusion
 ///        that holds less
 ///        than `largestBallShare` of a flat disk and caps the surface,
 ///        farthest first. A peak inside the ball of a deeper protrusion
-///        (a second bump of a tufted tail) is that protrusion.
+///        (a second bump of a tufted tail) is that protrusion. On a surface
+///        with boundaries no tip lies on a boundary loop (a landmark there
+///        would be a boundary landmark, which L0 has only on its holes).
 /// \pre `landmarks` are vertices of `surface`, none missing.
 /// Fails (Status) on an empty surface, a missing or out-of-range landmark
 /// or options out of range (lengths not positive, `ballScales` outside 1
@@ -121,13 +123,24 @@ struct ProtrusionConeReport
 /// the hind legs got a cone joined across the body, and the maps folded
 /// at the tip (Documentation/known-issues.md, the map's section). A cone
 /// is added only where every model with the protrusion has its tip in the
-/// split triangle or one sharing an edge with it (`disagreeing` lists the
-/// others: a tail raised where the others' hang would have to be turned
-/// round its root across two curves by the map, which did not settle).
-/// Where
-/// two cones' tips lie in one base triangle only the one more models have
-/// is added. Without cones, `domain` is that L0 and `landmarks` are
+/// split triangle or one sharing an edge with it; where the chosen triangle
+/// leaves one apart, the triangle that every tip lies in or beside (the
+/// one holding the most tips) is split instead, if there is one
+/// (`disagreeing` lists the others: a tail raised where the others' hang
+/// would have to be turned round its root across two curves by the map,
+/// which did not settle). A protrusion nearest to a boundary landmark gets
+/// no cone. Where two cones' tips lie in one base triangle only the one
+/// more models have is added, and cones are added (the most shared first)
+/// only while some model has every feature and every cone added, so that
+/// the Missing Landmark Placer can place the rest from it. Without cones, `domain` is that L0 and `landmarks` are
 /// unchanged.
+///
+/// Surfaces with boundaries (OpenSurface.h): L0 is then open, and each
+/// model is traced over it closed (`closeBaseDomain()`, `closeSurface()`,
+/// the caps' curves given), as every later stage runs it; a cone splits a
+/// triangle of the open L0 (never a cap's), so `domain` is open with the
+/// same holes. A tail is as landmark-free on a head cut open at the neck
+/// as on a whole animal.
 /// \pre Every model has the same number of features; `baseDomainModel`
 ///      has all of them.
 /// Fails (Status) when the landmark lists differ in length or do not fit
@@ -154,7 +167,7 @@ Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std:
 /// tails' roots as a built L0's do (Documentation/filters/ProtrusionCones.md).
 /// \pre Every model has one entry per vertex of `given`.
 /// Fails (Status) when `given` is not a base domain of F features
-/// (`checkBaseDomain()`), the landmark lists differ in length from F or
+/// (`checkBaseDomain()`, or `closeBaseDomain()` for an open one), the landmark lists differ in length from F or
 /// do not fit their surfaces, or the options are out of range.
 Status addProtrusionCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
   const BaseDomain& given, BaseDomain& domain, const ProtrusionConeOptions& options = {},
