@@ -119,6 +119,33 @@ Collection namedCollection(std::initializer_list<const char*> names)
   return collectionOf(std::move(models));
 }
 
+/// Real models cut open round `feature` (the core tests' cut, 0.4 of the
+/// way to its nearest neighbour in `closedL0`), side by side as the
+/// collection entries take them.
+struct OpenCollection
+{
+  std::vector<test::OpenModel> models;
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+};
+
+void cutOpen(std::initializer_list<const char*> names, const BaseDomain& closedL0, int feature, OpenCollection& out)
+{
+  out = OpenCollection{};
+  for (const char* name : names)
+  {
+    const test::LandmarkedModel model = test::landmarkedRealModel(name);
+    out.models.emplace_back();
+    const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, closedL0, feature, 0.4, out.models.back());
+    ASSERT_TRUE(cut.ok()) << name << ": " << cut.message();
+  }
+  for (const test::OpenModel& model : out.models)
+  {
+    out.surfaces.push_back(&model.surface);
+    out.landmarks.push_back(model.landmarks);
+  }
+}
+
 } // namespace
 
 TEST(ProtrusionCones, ASpikeIsAProtrusionAtItsTipNotInItsMiddleAndAClubbedOneWithinALargerBall)
@@ -375,21 +402,11 @@ TEST(ProtrusionCones, OpenSurfacesGetTheConeOnTheirOpenL0)
 {
   CMP_REQUIRE_SHARED_DATA();
   const BaseDomain closedL0 = test::realBaseDomain("381");
-  std::vector<test::OpenModel> open;
-  for (const char* name : { "381", "383", "385" })
-  {
-    const test::LandmarkedModel model = test::landmarkedRealModel(name);
-    open.emplace_back();
-    const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, closedL0, 12, 0.4, open.back());
-    ASSERT_TRUE(cut.ok()) << name << ": " << cut.message();
-  }
-  std::vector<const TriangleMesh*> surfaces;
-  std::vector<LandmarkList> landmarks;
-  for (const test::OpenModel& model : open)
-  {
-    surfaces.push_back(&model.surface);
-    landmarks.push_back(model.landmarks);
-  }
+  OpenCollection back;
+  ASSERT_NO_FATAL_FAILURE(cutOpen({ "381", "383", "385" }, closedL0, 12, back));
+  const std::vector<test::OpenModel>& open = back.models;
+  const std::vector<const TriangleMesh*>& surfaces = back.surfaces;
+  const std::vector<LandmarkList>& landmarks = back.landmarks;
   const int features = static_cast<int>(landmarks[0].size());
   BaseDomain builtOpen;
   ASSERT_TRUE(buildBaseDomain(open[0].surface, open[0].landmarks, builtOpen).ok());
@@ -438,21 +455,10 @@ TEST(ProtrusionCones, OpenSurfacesGetTheConeOnTheirOpenL0)
   // on 2 or 3 models each had left no model with every feature, and
   // consistent-remesh could place none). The tail keeps its cone.
   {
-    std::vector<test::OpenModel> heads;
-    for (const char* name : { "381", "383", "385", "spot" })
-    {
-      const test::LandmarkedModel model = test::landmarkedRealModel(name);
-      heads.emplace_back();
-      const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, closedL0, 1, 0.4, heads.back());
-      ASSERT_TRUE(cut.ok()) << name << ": " << cut.message();
-    }
-    std::vector<const TriangleMesh*> headSurfaces;
-    std::vector<LandmarkList> headLandmarks;
-    for (const test::OpenModel& model : heads)
-    {
-      headSurfaces.push_back(&model.surface);
-      headLandmarks.push_back(model.landmarks);
-    }
+    OpenCollection heads;
+    ASSERT_NO_FATAL_FAILURE(cutOpen({ "381", "383", "385", "spot" }, closedL0, 1, heads));
+    const std::vector<const TriangleMesh*>& headSurfaces = heads.surfaces;
+    std::vector<LandmarkList>& headLandmarks = heads.landmarks;
     const int headFeatures = static_cast<int>(headLandmarks[0].size());
     BaseDomain domain;
     ProtrusionConeReport report;

@@ -1874,6 +1874,36 @@ def case_missing_landmarks(tmp):
         check_contains(report["models"][name].get("error", ""), "no model has every feature", name + "'s error")
 
 
+def tip_gap(remesh_path, point, scale):
+    """The distance of `point` from the remesh at `remesh_path`, over `scale`."""
+    from vtkmodules.vtkCommonDataModel import vtkStaticCellLocator
+    import vtkmodules.vtkCommonCore as common
+    remesh = read_vtp(remesh_path)
+    locator = vtkStaticCellLocator()
+    locator.SetDataSet(remesh)
+    locator.BuildLocator()
+    closest, cell, sub, distance2 = [0.0, 0.0, 0.0], common.mutable(0), common.mutable(0), common.mutable(0.0)
+    locator.FindClosestPoint(list(point), closest, cell, sub, distance2)
+    return math.sqrt(float(distance2)) / scale
+
+
+def with_and_without_cones(tmp, pairs, check_run):
+    """Runs the command on `pairs` at level 3, L0 from the first, with
+    protrusion cones (the default) and with --no-protrusion-cones, checks
+    each run's exit status and `check_run(report, cones)`, and returns
+    {cones: (output folder, stdout, report)}."""
+    runs = {}
+    for cones in (True, False):
+        out = os.path.join(tmp, "out-cones" if cones else "out-plain")
+        flags = [] if cones else ["--no-protrusion-cones"]
+        status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3",
+                                                                         "--no-render"] + flags, out)
+        check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
+        check_run(report, cones)
+        runs[cones] = (out, stdout, report)
+    return runs
+
+
 def case_protrusion_cones(tmp):
     """Beyond the paper: 383 and 385 have a long landmark-free tail, 381 has
     none. With L0 built from 381 the command finds the tails, gives them a
@@ -1885,15 +1915,8 @@ def case_protrusion_cones(tmp):
     import numpy
     names = ["381", "383", "385"]
     pairs = [(shrec(name, "off"), shrec(name, "vts")) for name in names]
-    runs = {}
-    for cones in (True, False):
-        out = os.path.join(tmp, "out-cones" if cones else "out-plain")
-        flags = [] if cones else ["--no-protrusion-cones"]
-        status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3",
-                                                                         "--no-render"] + flags, out)
-        check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout, stderr))
-        check_models_ok(report, pairs, "protrusion cones" if cones else "no protrusion cones", 22 if cones else 21)
-        runs[cones] = (out, stdout, report)
+    runs = with_and_without_cones(tmp, pairs, lambda report, cones: check_models_ok(
+        report, pairs, "protrusion cones" if cones else "no protrusion cones", 22 if cones else 21))
     out, stdout, report = runs[True]
     check_equal(report["protrusion_cones"]["cones"], [{"feature": 21, "root": 13, "models": ["383", "385"]}],
                 "the cones")
@@ -1924,20 +1947,10 @@ def case_protrusion_cones(tmp):
     # The tails' tips: the remesh comes nearer to them with the cone (each
     # tip's distance from the remesh; the Hausdorff distance may lie
     # elsewhere, at a hoof).
-    from vtkmodules.vtkCommonDataModel import vtkStaticCellLocator
-    import vtkmodules.vtkCommonCore as common
     for name in ("383", "385"):
         tip = read_off(shrec(name, "off"))[0][report["models"][name]["cone_landmarks"]["21"]]
         root_area = math.sqrt(off_area(shrec(name, "off")))
-        gaps = []
-        for folder in (out, plain_out):
-            remesh = read_vtp(os.path.join(folder, name + ".remesh.vtp"))
-            locator = vtkStaticCellLocator()
-            locator.SetDataSet(remesh)
-            locator.BuildLocator()
-            closest, cell, sub, distance2 = [0.0, 0.0, 0.0], common.mutable(0), common.mutable(0), common.mutable(0.0)
-            locator.FindClosestPoint(list(tip), closest, cell, sub, distance2)
-            gaps.append(math.sqrt(float(distance2)) / root_area)
+        gaps = [tip_gap(os.path.join(folder, name + ".remesh.vtp"), tip, root_area) for folder in (out, plain_out)]
         print("%s: its tail tip %.4f of the square root of its area from the remesh with the cone, %.4f without"
               % (name, gaps[0], gaps[1]))
         check(gaps[0] < 0.5 * gaps[1], "%s: tail tip %.4f from the remesh with the cone, %.4f without"
@@ -2126,19 +2139,6 @@ def case_open_missing_landmarks(tmp):
               "%s: the remesh's vertex %d is not at the placed landmark" % (name, missing[name]))
 
 
-def tip_gap(remesh_path, point, scale):
-    """The distance of `point` from the remesh at `remesh_path`, over `scale`."""
-    from vtkmodules.vtkCommonDataModel import vtkStaticCellLocator
-    import vtkmodules.vtkCommonCore as common
-    remesh = read_vtp(remesh_path)
-    locator = vtkStaticCellLocator()
-    locator.SetDataSet(remesh)
-    locator.BuildLocator()
-    closest, cell, sub, distance2 = [0.0, 0.0, 0.0], common.mutable(0), common.mutable(0), common.mutable(0.0)
-    locator.FindClosestPoint(list(point), closest, cell, sub, distance2)
-    return math.sqrt(float(distance2)) / scale
-
-
 def case_open_protrusion_cones(tmp):
     """Issue 27 B with protrusion cones: 381, 383 and 385 cut open round the
     middle of the back (the core tests' cut, --open-models). The tails of
@@ -2154,15 +2154,7 @@ def case_open_protrusion_cones(tmp):
     for mesh, _ in pairs:
         check(os.path.isfile(mesh), "%s is missing (python.CLI.OpenModels writes it)" % mesh)
     features = len([line for line in open(pairs[0][1]) if line.strip()])
-    runs = {}
-    for cones in (True, False):
-        out = os.path.join(tmp, "out-cones" if cones else "out-plain")
-        flags = [] if cones else ["--no-protrusion-cones"]
-        status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain-from", "0", "--level", "3",
-                                                                         "--no-render"] + flags, out)
-        check_equal(status, 0, "exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
-        check_equal(report["failed"], [], "failed models")
-        runs[cones] = (out, stdout, report)
+    runs = with_and_without_cones(tmp, pairs, lambda report, cones: check_equal(report["failed"], [], "failed models"))
     out, stdout, report = runs[True]
     check_equal(report["protrusion_cones"]["cones"], [{"feature": features, "root": 12, "models": ["383", "385"]}],
                 "the cones")
