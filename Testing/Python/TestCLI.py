@@ -2196,6 +2196,23 @@ def case_open_protrusion_cones(tmp):
         check(gaps[0] < 0.5 * gaps[1], "%s: tail tip %.4f from the remesh with the cone, %.4f without"
               % (name, gaps[0], gaps[1]))
 
+    # A given open L0 (the one the run without cones built) gets the cone
+    # by a split of one of its triangles; its holes and other triangles
+    # stay.
+    given = os.path.join(runs[False][0], "base_domain.vtp")
+    out = os.path.join(tmp, "out-given")
+    status, stdout, stderr, report = run_cli(model_arguments(pairs) + ["--base-domain", given, "--level", "3",
+                                                                     "--no-render"], out)
+    check_equal(status, 0, "given open L0: exit status (stdout: %s, stderr: %s)" % (stdout[-2000:], stderr))
+    check_equal(report["failed"], [], "given open L0: failed models")
+    check_equal(report["protrusion_cones"]["cones"], [{"feature": features, "root": 12, "models": ["383", "385"]}],
+                "the given open L0's cones")
+    plain_domain = runs[False][2]["base_domain"]
+    coned = report["base_domain"]
+    check_equal((coned.get("vertices"), coned.get("triangles")),
+                (plain_domain.get("vertices") + 1, plain_domain.get("triangles") + 2), "the given open L0 with the cone")
+    check_equal(coned.get("boundary_loops"), plain_domain.get("boundary_loops"), "the given open L0's holes")
+
 
 CASES = {
     "default-collection": case_default_collection,
