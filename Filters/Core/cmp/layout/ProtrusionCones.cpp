@@ -293,16 +293,19 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
       return -1;
     if (!nets.count(model))
     {
-      TriangleMesh closed;
-      LandmarkList closedLandmarks;
-      SurfaceHoles surfaceHoles;
-      NetTracerOptions tracing;
-      Status s = closeSurface(*surfaces[model], landmarks[model], holes, closed, closedLandmarks, surfaceHoles);
-      if (s.ok())
+      Status s;
+      if (holes.empty())
+        s = traceFeatureNet(*surfaces[model], landmarks[model], base, nets[model]);
+      else
       {
+        TriangleMesh closed;
+        LandmarkList closedLandmarks;
+        SurfaceHoles surfaceHoles;
+        s = closeSurface(*surfaces[model], landmarks[model], holes, closed, closedLandmarks, surfaceHoles);
+        NetTracerOptions tracing;
         tracing.presetCurves = surfaceHoles.curves;
-        s = holes.empty() ? traceFeatureNet(*surfaces[model], landmarks[model], base, nets[model])
-                          : traceFeatureNet(closed, closedLandmarks, closedBase, nets[model], tracing);
+        if (s.ok())
+          s = traceFeatureNet(closed, closedLandmarks, closedBase, nets[model], tracing);
       }
       if (!s.ok())
       {
