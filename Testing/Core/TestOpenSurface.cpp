@@ -1,4 +1,5 @@
 #include <cmp/basedomain/BaseDomainBuilder.h>
+#include <cmp/io/Landmarks.h>
 #include <cmp/layout/LayoutValidator.h>
 #include <cmp/layout/NetTracer.h>
 #include <cmp/layout/OpenSurface.h>
@@ -26,8 +27,9 @@ namespace
 
 /// Writes `open` for consistent-remesh into folder `dump`: NAME.off and
 /// NAME.vts (vertex and position per feature), and the open L0 its cut
-/// gives as base_domain.off (vertex f is feature f).
-void writeOpenModel(const test::OpenModel& open, const std::string& dump, const std::string& name)
+/// gives as base_domain.off (vertex f is feature f). Fails (Status) where
+/// the landmark file cannot be written.
+Status writeOpenModel(const test::OpenModel& open, const std::string& dump, const std::string& name)
 {
   std::ofstream off(dump + "/" + name + ".off");
   off.precision(17);
@@ -36,10 +38,8 @@ void writeOpenModel(const test::OpenModel& open, const std::string& dump, const 
     off << p.x() << " " << p.y() << " " << p.z() << "\n";
   for (const Triangle& t : open.surface.triangles)
     off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-  std::ofstream vts(dump + "/" + name + ".vts");
-  vts.precision(17);
-  for (int l : open.landmarks)
-    vts << l << " " << open.surface.points[l].transpose() << "\n";
+  if (Status s = writeLandmarkFile(dump + "/" + name + ".vts", open.landmarks, open.surface, {}); !s.ok())
+    return s;
   std::ofstream l0(dump + "/base_domain.off");
   l0.precision(17);
   l0 << "OFF\n" << open.domain.mesh.vertexCount() << " " << open.domain.mesh.triangleCount() << " 0\n";
@@ -51,6 +51,7 @@ void writeOpenModel(const test::OpenModel& open, const std::string& dump, const 
   for (const Triangle& t : open.domain.mesh.triangles)
     l0 << "3 " << open.domain.featureIds[t[0]] << " " << open.domain.featureIds[t[1]] << " "
        << open.domain.featureIds[t[2]] << "\n";
+  return {};
 }
 
 /// Whether (a, b) is an edge of a triangle of `mesh` in that direction.
@@ -336,7 +337,10 @@ TEST(OpenSurface, OpenFourLeggedModelsRemeshWithTheirBoundaryOnTheirs)
     const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, domain, feature, radius, open);
   ASSERT_TRUE(cut.ok()) << cut.message();
     if (const char* dump = std::getenv("CMP_OPEN_DUMP"))
-      writeOpenModel(open, dump, name);
+    {
+      const Status written = writeOpenModel(open, dump, name);
+      ASSERT_TRUE(written.ok()) << written.message();
+    }
     if (openDomain.mesh.triangles.empty())
     {
       BaseDomainBuilderReport built;
@@ -422,9 +426,8 @@ TEST(OpenSurface, WriteOpenModelsForTheCommand)
     test::OpenModel open;
     const Status cut = test::cutAroundFeature(model.data.mesh, model.landmarks, domain, feature, radius, open);
     ASSERT_TRUE(cut.ok()) << name << ": " << cut.message();
-    writeOpenModel(open, dump, name);
-    std::ifstream written(std::string(dump) + "/" + name + ".vts");
-    ASSERT_TRUE(written.good()) << "could not write " << dump << "/" << name << ".vts";
+    const Status written = writeOpenModel(open, dump, name);
+    ASSERT_TRUE(written.ok()) << written.message();
   }
 }
 
