@@ -177,8 +177,7 @@ int vtkCMPFeatureNetTracer::RequestData(
     options.detectSwirls = this->DetectSwirls;
     options.progress = [this](double fraction) { this->UpdateProgress(0.9 * fraction); };
     // An open surface's caps come traced: its boundary stretches and the spokes.
-    options.presetCurves = surface.holes.curves;
-    status = cmp::traceFeatureNet(surface.closed, surface.closedLandmarks, domain, net, options, &report);
+    status = cmp::traceClosedSurface(surface.closed, surface.closedLandmarks, surface.holes, domain, net, options, &report);
   }
   if (!status.ok())
   {

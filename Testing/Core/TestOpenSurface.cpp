@@ -127,15 +127,8 @@ Status remeshOpenModel(const test::OpenModel& model, int level, OpenRemesh& out,
   BaseDomainHoles holes;
   if (Status s = closeBaseDomain(given ? *given : model.domain, closedDomain, holes); !s.ok())
     return s;
-  TriangleMesh closed;
-  LandmarkList closedLandmarks;
-  SurfaceHoles surfaceHoles;
-  if (Status s = closeSurface(model.surface, model.landmarks, holes, closed, closedLandmarks, surfaceHoles); !s.ok())
-    return s;
-  NetTracerOptions tracing;
-  tracing.presetCurves = surfaceHoles.curves;
   TracedNet traced;
-  if (Status s = traceFeatureNet(closed, closedLandmarks, closedDomain, traced, tracing); !s.ok())
+  if (Status s = traceSurfaceWithBoundaries(model.surface, model.landmarks, holes, closedDomain, traced); !s.ok())
     return s;
   StraightenOptions straightening;
   straightening.net.keptFeatures = holes.keptFeatures();

@@ -232,6 +232,26 @@ Status closeSurface(const TriangleMesh& surface, const LandmarkList& landmarks, 
   return {};
 }
 
+Status traceClosedSurface(const TriangleMesh& closed, const LandmarkList& closedLandmarks,
+  const SurfaceHoles& surfaceHoles, const BaseDomain& closedDomain, TracedNet& net, NetTracerOptions options,
+  NetTracerReport* report)
+{
+  options.presetCurves = surfaceHoles.curves; // the caps' curves, traced already
+  return traceFeatureNet(closed, closedLandmarks, closedDomain, net, options, report);
+}
+
+Status traceSurfaceWithBoundaries(const TriangleMesh& surface, const LandmarkList& landmarks,
+  const BaseDomainHoles& holes, const BaseDomain& closedDomain, TracedNet& net, const NetTracerOptions& options,
+  NetTracerReport* report)
+{
+  TriangleMesh closed;
+  LandmarkList closedLandmarks;
+  SurfaceHoles surfaceHoles;
+  if (Status s = closeSurface(surface, landmarks, holes, closed, closedLandmarks, surfaceHoles); !s.ok())
+    return s;
+  return traceClosedSurface(closed, closedLandmarks, surfaceHoles, closedDomain, net, options, report);
+}
+
 std::vector<int> capPatchIds(const SurfaceHoles& surfaceHoles, const BaseDomainHoles& holes)
 {
   std::vector<int> patches;

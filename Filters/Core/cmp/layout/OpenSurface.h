@@ -112,6 +112,26 @@ struct SurfaceHoles
 Status closeSurface(const TriangleMesh& surface, const LandmarkList& landmarks, const BaseDomainHoles& holes,
   TriangleMesh& closed, LandmarkList& closedLandmarks, SurfaceHoles& surfaceHoles);
 
+/// \brief Traces `closed` (`closeSurface()`'s, with `closedLandmarks` and
+///        `surfaceHoles`) over the closed L0 `closedDomain`, the caps' curves
+///        given: `traceFeatureNet()` with `NetTracerOptions::presetCurves` set
+///        to `surfaceHoles.curves` (whatever `options` had there).
+/// Fails where `traceFeatureNet()` fails.
+Status traceClosedSurface(const TriangleMesh& closed, const LandmarkList& closedLandmarks,
+  const SurfaceHoles& surfaceHoles, const BaseDomain& closedDomain, TracedNet& net, NetTracerOptions options = {},
+  NetTracerReport* report = nullptr);
+
+/// \brief Traces a surface that may have boundary loops over the closed L0
+///        (`closeBaseDomain()`'s `closedDomain` and `holes`), as every stage
+///        runs such a surface: `closeSurface()`, then `traceClosedSurface()`.
+///        A closed surface with a closed L0 is traced as it is. `net` is the
+///        closed surface's net; its first vertices and triangles are the
+///        surface's.
+/// Fails where `closeSurface()` or `traceFeatureNet()` fails.
+Status traceSurfaceWithBoundaries(const TriangleMesh& surface, const LandmarkList& landmarks,
+  const BaseDomainHoles& holes, const BaseDomain& closedDomain, TracedNet& net, const NetTracerOptions& options = {},
+  NetTracerReport* report = nullptr);
+
 /// \brief Per cap triangle of `closeSurface()`'s closed surface (those after
 ///        the open surface's), the hole's base triangle it lies in: the cap
 ///        triangle on the boundary stretch between the i-th and (i+1)-th

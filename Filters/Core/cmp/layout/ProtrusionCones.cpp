@@ -293,20 +293,7 @@ Status addCones(const std::vector<const TriangleMesh*>& surfaces, std::vector<La
       return -1;
     if (!nets.count(model))
     {
-      Status s;
-      if (holes.empty())
-        s = traceFeatureNet(*surfaces[model], landmarks[model], base, nets[model]);
-      else
-      {
-        TriangleMesh closed;
-        LandmarkList closedLandmarks;
-        SurfaceHoles surfaceHoles;
-        s = closeSurface(*surfaces[model], landmarks[model], holes, closed, closedLandmarks, surfaceHoles);
-        NetTracerOptions tracing;
-        tracing.presetCurves = surfaceHoles.curves;
-        if (s.ok())
-          s = traceFeatureNet(closed, closedLandmarks, closedBase, nets[model], tracing);
-      }
+      const Status s = traceSurfaceWithBoundaries(*surfaces[model], landmarks[model], holes, closedBase, nets[model]);
       if (!s.ok())
       {
         nets.erase(model);

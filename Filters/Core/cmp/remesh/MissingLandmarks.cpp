@@ -214,9 +214,6 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
 
   struct Mapped
   {
-    TriangleMesh closed;
-    LandmarkList closedLandmarks;
-    SurfaceHoles holes;
     TracedNet traced;
     StraightenedNet straight;
     PatchParameterization map;
@@ -232,11 +229,7 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
     [&](int i) {
       const int m = members[i];
       auto one = std::make_unique<Mapped>();
-      statuses[i] = closeSurface(*surfaces[m], reduced(m), holes, one->closed, one->closedLandmarks, one->holes);
-      NetTracerOptions tracing;
-      tracing.presetCurves = one->holes.curves; // the caps' curves, traced already
-      if (statuses[i].ok())
-        statuses[i] = traceFeatureNet(one->closed, one->closedLandmarks, domain, one->traced, tracing);
+      statuses[i] = traceSurfaceWithBoundaries(*surfaces[m], reduced(m), holes, domain, one->traced);
       if (statuses[i].ok())
         statuses[i] = straighten(one->traced, domain, one->straight, one->map, straightening);
       if (statuses[i].ok())
