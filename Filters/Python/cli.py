@@ -376,7 +376,15 @@ def _place_missing_landmarks(args, models, mine, ranks, report, cones=None):
         def place():
             source = order.index(args.base_domain_from) if args.base_domain is None and \
                 args.base_domain_from in complete else -1
-            return place_missing_landmarks(_all_surfaces(models, order), source)
+            # The L0 the models will be mapped over, where it is known now,
+            # judges the climbs to tips.
+            if cones is not None:
+                domain = polydata_from_text(cones)
+            elif args.base_domain is not None:
+                domain = load_base_domain(args.base_domain)
+            else:
+                domain = None
+            return place_missing_landmarks(_all_surfaces(models, order), source, domain)
         print("placing %d missing landmark%s on %d model%s from the others"
               % (sum(map(len, missing.values())), "" if sum(map(len, missing.values())) == 1 else "s",
                  len(missing), "" if len(missing) == 1 else "s"), flush=True)
@@ -409,11 +417,19 @@ def _place_missing_landmarks(args, models, mine, ranks, report, cones=None):
         if ranks.rank == 0:
             for entry in entries:
                 climb = entry.get("climbed_per_sqrt_area") or 0.0
+                if entry.get("climb_undone"):
+                    tip = entry.get("tip_distortion")
+                    judged = ("; kept there, not climbed to the peak nearby: %s's map over L0 is less distorted "
+                              "so, %.3g against %s" % (model.name, entry["mapped_distortion"],
+                                                      "no map" if tip is None else "%.3g" % tip))
+                else:
+                    judged = ""
                 print("  %s: feature %d placed at vertex %d (the models that have it agree within %.1f%% of "
-                      "the square root of its area%s)" % (model.name, entry["feature"], entry["vertex"],
-                                                          100 * entry["spread_per_sqrt_area"],
-                                                          "; it climbed %.1f%% from there to the tip they have "
-                                                          "it at" % (100 * climb) if climb > 0 else ""), flush=True)
+                      "the square root of its area%s%s)" % (model.name, entry["feature"], entry["vertex"],
+                                                            100 * entry["spread_per_sqrt_area"],
+                                                            "; it climbed %.1f%% from there to the tip they have "
+                                                            "it at" % (100 * climb) if climb > 0 else "", judged),
+                      flush=True)
             if error:
                 print("  %s: FAILED: %s" % (model.name, error), flush=True)
 

@@ -119,15 +119,21 @@ def collection_blocks(models):
     return blocks
 
 
-def place_missing_landmarks(models, base_domain_model):
+def place_missing_landmarks(models, base_domain_model, domain=None):
     """Missing Landmark Placer on the surfaces of `models` (a multiblock, one
-    block per model): for each model, the list of what was placed on it,
-    {"feature", "vertex", "position", "spread_per_sqrt_area",
-    "climbed_per_sqrt_area"}, and the message
-    of a model whose features could not be placed (None if they were).
-    Raises StageError if the filter fails."""
+    block per model), with `domain` (the L0 they will be mapped over, or
+    None) to judge the climbs to tips by: for each model, the list of what
+    was placed on it, {"feature", "vertex", "position",
+    "spread_per_sqrt_area", "climbed_per_sqrt_area"} and, for a judged
+    climb, "tip_distortion" and "mapped_distortion" (its model's map
+    distortion over `domain` with and without the climb; None: it could not
+    be mapped so) and "climb_undone", and the message of a model whose
+    features could not be placed (None if they were). Raises StageError if
+    the filter fails."""
     placer = cmp.vtkCMPMissingLandmarkPlacer()
     placer.SetInputData(collection_blocks(models))
+    if domain is not None:
+        placer.SetInputData(1, domain)
     placer.SetBaseDomainModel(base_domain_model)
     placed = run(placer)
     results = []
@@ -139,13 +145,26 @@ def place_missing_landmarks(models, base_domain_model):
         climbs = surface.GetFieldData().GetArray(array_names.PLACED_FEATURE_CLIMB_ARRAY)
         spread_of = {int(features.GetTuple1(i)): spreads.GetTuple1(i) for i in range(features.GetNumberOfTuples())}
         climb_of = {int(features.GetTuple1(i)): climbs.GetTuple1(i) for i in range(features.GetNumberOfTuples())}
+        judged = {}
+        tips = surface.GetFieldData().GetArray(array_names.PLACED_FEATURE_TIP_DISTORTION_ARRAY)
+        mapped = surface.GetFieldData().GetArray(array_names.PLACED_FEATURE_MAPPED_DISTORTION_ARRAY)
+        for i in range(features.GetNumberOfTuples() if tips and mapped else 0):
+            tip, at_mapped = tips.GetTuple1(i), mapped.GetTuple1(i)
+            if tip != 0.0 or at_mapped != 0.0:
+                judged[int(features.GetTuple1(i))] = (tip, at_mapped)
         entries = []
         for vertex in numpy.flatnonzero(vtk_to_numpy(marks) >= 0).tolist():
             feature = int(marks.GetTuple1(vertex))
-            entries.append({"feature": feature, "vertex": vertex,
-                            "position": [significant(x) for x in surface.GetPoint(vertex)],
-                            "spread_per_sqrt_area": significant(spread_of[feature]),
-                            "climbed_per_sqrt_area": significant(climb_of[feature])})
+            entry = {"feature": feature, "vertex": vertex,
+                     "position": [significant(x) for x in surface.GetPoint(vertex)],
+                     "spread_per_sqrt_area": significant(spread_of[feature]),
+                     "climbed_per_sqrt_area": significant(climb_of[feature])}
+            if feature in judged:
+                tip, at_mapped = judged[feature]
+                entry["tip_distortion"] = significant(tip) if numpy.isfinite(tip) else None
+                entry["mapped_distortion"] = significant(at_mapped) if numpy.isfinite(at_mapped) else None
+                entry["climb_undone"] = bool(at_mapped < tip)
+            entries.append(entry)
         entries.sort(key=lambda entry: entry["feature"])
         left = [f for f in model.missing if f not in {entry["feature"] for entry in entries}]
         results.append((entries, "feature%s %s could not be placed" % ("" if len(left) == 1 else "s",

@@ -34,6 +34,13 @@ constexpr const char* kPlacedFeatureSpreadArray = "PlacedFeatureSpread";
 ///        where the maps carried it to the tip its sources have it at, over
 ///        sqrt(area) (0: it did not climb).
 constexpr const char* kPlacedFeatureClimbArray = "PlacedFeatureClimb";
+/// \brief Field double arrays, with a base domain given to Missing Landmark
+///        Placer: per placed feature that climbed, its model's map
+///        distortion over that L0 with the feature at the tip and at the
+///        vertex the maps gave (the less distorted one is kept; 0: not
+///        judged; infinite: that model could not be mapped so).
+constexpr const char* kPlacedFeatureTipDistortionArray = "PlacedFeatureTipDistortion";
+constexpr const char* kPlacedFeatureMappedDistortionArray = "PlacedFeatureMappedDistortion";
 /// \brief Field int array of the base domain Protrusion Cones builds: per
 ///        cone (features F, F + 1, ...), the feature whose landmark is its
 ///        root.

@@ -19,8 +19,20 @@
 
 vtkStandardNewMacro(vtkCMPMissingLandmarkPlacer);
 
-int vtkCMPMissingLandmarkPlacer::FillInputPortInformation(int, vtkInformation* info)
+vtkCMPMissingLandmarkPlacer::vtkCMPMissingLandmarkPlacer()
 {
+  this->SetNumberOfInputPorts(2);
+}
+
+int vtkCMPMissingLandmarkPlacer::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    // The L0 the collection will be mapped over, to judge the climbs by.
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   // The whole collection at once: the composite pipeline must not iterate.
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -66,6 +78,20 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
   options.maximumSources = this->MaximumSources;
   options.climbToTips = this->ClimbToTips;
   options.progress = [this](double f) { this->UpdateProgress(0.95 * f); };
+  cmp::BaseDomain domain;
+  if (vtkPolyData* domainInput = vtkPolyData::GetData(inputVector[1]))
+  {
+    // Open or closed: the core closes it as the other stages do.
+    cmp::BaseDomain closed;
+    cmp::BaseDomainHoles holes;
+    if (cmp::Status s = cmp::bridge::toClosedBaseDomain(domainInput, closed, holes); !s.ok())
+      return fail("the base domain: " + s.message());
+    domain = closed;
+    domain.mesh.points.resize(holes.openVertexCount);
+    domain.featureIds.resize(holes.openVertexCount);
+    domain.mesh.triangles.resize(holes.openTriangleCount);
+    options.domain = &domain;
+  }
   cmp::MissingLandmarkReport report;
   if (cmp::Status s = cmp::placeMissingLandmarks(surfaces, landmarks, options, &report); !s.ok())
     return fail(s.message());
@@ -86,7 +112,7 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
     cmp::bridge::setFeatureIds(result, landmarks[m]);
     std::vector<int> placedIds(static_cast<std::size_t>(result->GetNumberOfPoints()), -1);
     std::vector<int> features;
-    std::vector<double> spreads, climbs;
+    std::vector<double> spreads, climbs, tipDistortions, mappedDistortions;
     for (const cmp::PlacedLandmark& placed : report.placed)
       if (placed.model == static_cast<int>(m))
       {
@@ -94,6 +120,8 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
         features.push_back(placed.feature);
         spreads.push_back(placed.spread);
         climbs.push_back(placed.climbed);
+        tipDistortions.push_back(placed.tipDistortion);
+        mappedDistortions.push_back(placed.mappedDistortion);
       }
     result->GetPointData()->AddArray(cmp::bridge::intArray(cmp::bridge::kPlacedFeatureIdArray, placedIds));
     result->GetFieldData()->AddArray(cmp::bridge::intArray(cmp::bridge::kPlacedFeaturesArray, features));
@@ -101,6 +129,10 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
       cmp::bridge::valueArray<vtkDoubleArray>(cmp::bridge::kPlacedFeatureSpreadArray, spreads));
     result->GetFieldData()->AddArray(
       cmp::bridge::valueArray<vtkDoubleArray>(cmp::bridge::kPlacedFeatureClimbArray, climbs));
+    result->GetFieldData()->AddArray(
+      cmp::bridge::valueArray<vtkDoubleArray>(cmp::bridge::kPlacedFeatureTipDistortionArray, tipDistortions));
+    result->GetFieldData()->AddArray(
+      cmp::bridge::valueArray<vtkDoubleArray>(cmp::bridge::kPlacedFeatureMappedDistortionArray, mappedDistortions));
     results.push_back(result);
   }
   cmp::bridge::assembleOutput(input, output, results);

@@ -29,8 +29,13 @@
 /// collection is remeshed at `Level` with one connectivity, and each
 /// missing feature is carried through the remeshes from every model that
 /// has it; the geometric median of the carried points, projected onto the
-/// model, gives the nearest vertex that carries no other feature. Measured
-/// in Documentation/filters/MissingLandmarkPlacer.md.
+/// model, gives the nearest vertex that carries no other feature. With the
+/// optional second input, the base domain the collection will be mapped
+/// over (L0, with FeatureId), a feature that climbed to a tip keeps it only
+/// where its model's map over that L0 is no more distorted than without the
+/// climb (field arrays `PlacedFeatureTipDistortion` and
+/// `PlacedFeatureMappedDistortion`). Measured in
+/// Documentation/filters/MissingLandmarkPlacer.md.
 ///
 /// Fails with `vtkErrorMacro` and an empty output when an input is not a
 /// closed genus-0 triangle surface with valid `FeatureId`, when a feature
@@ -77,7 +82,7 @@ public:
   vtkBooleanMacro(ClimbToTips, bool);
 
 protected:
-  vtkCMPMissingLandmarkPlacer() = default;
+  vtkCMPMissingLandmarkPlacer();
   ~vtkCMPMissingLandmarkPlacer() override = default;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;

@@ -95,6 +95,83 @@ TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
   EXPECT_TRUE(validateLandmarks(landmarks[1], surfaces[1]->vertexCount()).ok());
 }
 
+// With the L0 the collection will be mapped over, each climb to a tip is
+// judged by the model's own map over it: the feature keeps the tip only
+// where that map is no more distorted than with the feature where the maps
+// carried it. The hooves above climb; here each is mapped both ways.
+TEST(MissingLandmarks, AClimbKeepsTheTipOnlyWhereTheModelsMapOverL0IsNoMoreDistorted)
+{
+  std::vector<test::LandmarkedModel> models;
+  for (const char* name : { "381", "383", "384", "388", "391" })
+    models.push_back(test::landmarkedRealModel(name));
+  std::vector<const TriangleMesh*> surfaces;
+  std::vector<LandmarkList> landmarks;
+  for (const test::LandmarkedModel& model : models)
+  {
+    surfaces.push_back(&model.data.mesh);
+    landmarks.push_back(model.landmarks);
+  }
+  const std::vector<std::pair<int, int>> taken = { { 1, 9 }, { 1, 17 }, { 3, 5 }, { 3, 11 } };
+  const std::vector<int> tips = { 5, 9, 11 };
+  for (auto [m, f] : taken)
+    landmarks[m][f] = kMissingLandmark;
+  const BaseDomain domain = test::realBaseDomain("381");
+  MissingLandmarkOptions options;
+  options.domain = &domain;
+  MissingLandmarkReport report;
+  const Status status = placeMissingLandmarks(surfaces, landmarks, options, &report);
+  ASSERT_TRUE(status.ok()) << status.message();
+  ASSERT_EQ(report.placed.size(), taken.size());
+  for (std::size_t i = 0; i < taken.size(); ++i)
+  {
+    const auto [m, f] = taken[i];
+    const PlacedLandmark& placed = report.placed[i];
+    ASSERT_EQ(placed.model, m);
+    ASSERT_EQ(placed.feature, f);
+    EXPECT_EQ(landmarks[m][f], placed.vertex);
+    std::cout << models[m].name << " feature " << f << ": map distortion " << placed.tipDistortion
+              << " at the tip, " << placed.mappedDistortion << " where the maps carried it"
+              << (placed.climbUndone ? " (climb undone)" : "") << "\n";
+    if (std::find(tips.begin(), tips.end(), f) == tips.end())
+    {
+      // Not at a tip: nothing climbed, nothing judged.
+      EXPECT_EQ(placed.climbed, 0.0);
+      EXPECT_EQ(placed.tipDistortion, 0.0);
+      EXPECT_EQ(placed.mappedDistortion, 0.0);
+      EXPECT_FALSE(placed.climbUndone);
+      continue;
+    }
+    // Both maps settle near isometric (1 is isometric).
+    EXPECT_GE(placed.tipDistortion, 1.0) << models[m].name << " feature " << f;
+    EXPECT_LT(placed.tipDistortion, 10.0) << models[m].name << " feature " << f;
+    EXPECT_GE(placed.mappedDistortion, 1.0) << models[m].name << " feature " << f;
+    EXPECT_LT(placed.mappedDistortion, 10.0) << models[m].name << " feature " << f;
+    EXPECT_EQ(placed.climbUndone, placed.mappedDistortion < placed.tipDistortion);
+    if (placed.climbUndone)
+    {
+      EXPECT_EQ(placed.vertex, placed.mappedVertex);
+      EXPECT_EQ(placed.climbed, 0.0);
+    }
+    else
+    {
+      EXPECT_NE(placed.vertex, placed.mappedVertex);
+      EXPECT_GT(placed.climbed, 0.0);
+    }
+    EXPECT_EQ(placed.position, models[m].data.mesh.points[placed.vertex]);
+  }
+  // An L0 of other features is refused by name before any work.
+  BaseDomain other = domain;
+  other.featureIds.pop_back();
+  other.mesh.points.pop_back();
+  std::vector<LandmarkList> again = { models[0].landmarks, models[1].landmarks };
+  again[1][9] = kMissingLandmark;
+  options.domain = &other;
+  const Status refused = placeMissingLandmarks({ surfaces[0], surfaces[1] }, again, options);
+  EXPECT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("the base domain the climbs are judged over"), std::string::npos)
+    << refused.message();
+}
+
 TEST(MissingLandmarks, NothingMissingIsNothingToDo)
 {
   const test::LandmarkedModel model = test::landmarkedRealModel("391");

@@ -181,6 +181,33 @@ def main():
         refused.UpdatePipeline()
     check_contains(errors.text, "model 0 has 6 features, the given L0 4", "Protrusion Cones with a 4-vertex L0")
     check_equal(servermanager.Fetch(refused, idx=1).GetNumberOfPoints(), 0, "L0 after the refusal")
+    # With the L0 the collection will be mapped over (input 1), the placer
+    # judges each climb by the model's map over it and says both
+    # distortions; an L0 of other features is refused by name.
+    judged = names["MissingLandmarkPlacer"](Input=group, BaseDomain=capsule_domain)
+    with ErrorCapture(judged.GetClientSideObject()) as errors:
+        judged_output = servermanager.Fetch(judged)
+    check_equal(errors.text, "", "the placer with a base domain")
+    for block, (features, _) in expected.items():
+        field = judged_output.GetBlock(block).GetFieldData()
+        climbs = field.GetArray("PlacedFeatureClimb")
+        for name in ("PlacedFeatureTipDistortion", "PlacedFeatureMappedDistortion"):
+            values = field.GetArray(name)
+            check(values is not None and values.GetNumberOfTuples() == len(features),
+                  "block %d's %s" % (block, name))
+        tips = field.GetArray("PlacedFeatureTipDistortion")
+        mapped = field.GetArray("PlacedFeatureMappedDistortion")
+        for i in range(len(features)):
+            if tips.GetValue(i) != 0.0 or mapped.GetValue(i) != 0.0:
+                # Judged: the climb stays only where the tip's map is no
+                # more distorted.
+                check_equal(climbs.GetValue(i) > 0.0, not mapped.GetValue(i) < tips.GetValue(i),
+                            "block %d: the climb kept where its map is the less distorted" % block)
+    refused = names["MissingLandmarkPlacer"](Input=group, BaseDomain=tetrahedron)
+    with ErrorCapture(refused.GetClientSideObject()) as errors:
+        refused.UpdatePipeline()
+    check_contains(errors.text, "the base domain the climbs are judged over has 4 vertices but the models 6 "
+                   "features", "the placer with a 4-vertex L0")
     # No model with every feature: the placer says so.
     lonely = names["MissingLandmarkPlacer"](Input=simple.GroupDatasets(Input=[blob, peanut]))
     with ErrorCapture(lonely.GetClientSideObject()) as errors:

@@ -410,6 +410,91 @@ Status placeOneSet(const std::vector<const TriangleMesh*>& surfaces, const std::
   return {};
 }
 
+/// The distortion of `surface`'s map over the closed L0 `domain` (`holes`
+/// its) with `list` as its landmarks (`GlobalMapReport::distortionAfter`):
+/// infinite where it cannot be traced or mapped, NaN where the curves were
+/// not freed (no whole-surface map to judge by).
+double mapDistortion(const TriangleMesh& surface, const LandmarkList& list, const BaseDomain& domain,
+  const BaseDomainHoles& holes, const StraightenOptions& straightening)
+{
+  TracedNet traced;
+  if (!traceSurfaceWithBoundaries(surface, list, holes, domain, traced).ok())
+    return std::numeric_limits<double>::infinity();
+  StraightenedNet straight;
+  PatchParameterization map;
+  StraightenReport report;
+  if (!straighten(traced, domain, straight, map, straightening, &report).ok())
+    return std::numeric_limits<double>::infinity();
+  if (!report.freeCurves.applied)
+    return std::numeric_limits<double>::quiet_NaN();
+  return report.freeCurves.map.distortionAfter;
+}
+
+/// `MissingLandmarkOptions::domain`: every placed feature that climbed is
+/// judged by its model's map over the L0 the collection will be mapped
+/// over, with the feature at the tip and at the vertex the maps gave (the
+/// model's other placed features where they are); the less distorted map
+/// wins, the tip on a tie or where neither can be judged.
+void judgeClimbs(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
+  const BaseDomain& domain, const BaseDomainHoles& holes, const MissingLandmarkOptions& options,
+  std::vector<PlacedLandmark>& placed, const std::function<void(double)>& progress)
+{
+  StraightenOptions straightening = options.straighten;
+  straightening.net.keptFeatures = holes.keptFeatures();
+  straightening.map.fixedPatches = holes.holeTriangle;
+  // Jobs: (model, placed index or -1 for the landmarks as placed).
+  std::vector<std::pair<int, int>> jobs;
+  std::vector<int> tipJob(placed.size(), -1), mappedJob(placed.size(), -1);
+  std::vector<int> asPlaced(surfaces.size(), -1);
+  for (std::size_t i = 0; i < placed.size(); ++i)
+  {
+    const PlacedLandmark& p = placed[i];
+    const LandmarkList& list = landmarks[p.model];
+    if (p.climbed <= 0.0 || p.mappedVertex < 0 || p.mappedVertex == p.vertex ||
+      std::find(list.begin(), list.end(), p.mappedVertex) != list.end())
+      continue;
+    if (asPlaced[p.model] < 0)
+    {
+      asPlaced[p.model] = static_cast<int>(jobs.size());
+      jobs.emplace_back(p.model, -1);
+    }
+    tipJob[i] = asPlaced[p.model];
+    mappedJob[i] = static_cast<int>(jobs.size());
+    jobs.emplace_back(p.model, static_cast<int>(i));
+  }
+  if (jobs.empty())
+    return;
+  std::vector<double> distortion(jobs.size(), std::numeric_limits<double>::infinity());
+  forEachOnThreads(
+    static_cast<int>(jobs.size()), options.threads,
+    [&](int j) {
+      const auto [m, i] = jobs[j];
+      LandmarkList list = landmarks[m];
+      if (i >= 0)
+        list[placed[i].feature] = placed[i].mappedVertex;
+      distortion[j] = mapDistortion(*surfaces[m], list, domain, holes, straightening);
+    },
+    [&](int j, const char*) { distortion[j] = std::numeric_limits<double>::infinity(); },
+    [&](int done) { progress(static_cast<double>(done) / jobs.size()); });
+  for (std::size_t i = 0; i < placed.size(); ++i)
+  {
+    if (tipJob[i] < 0)
+      continue;
+    PlacedLandmark& p = placed[i];
+    p.tipDistortion = distortion[tipJob[i]];
+    p.mappedDistortion = distortion[mappedJob[i]];
+    // NaN (not judged) compares false: the tip stays.
+    if (p.mappedDistortion < p.tipDistortion)
+    {
+      p.climbUndone = true;
+      p.climbed = 0.0;
+      p.vertex = p.mappedVertex;
+      p.position = surfaces[p.model]->points[p.vertex];
+      landmarks[p.model][p.feature] = p.vertex;
+    }
+  }
+}
+
 } // namespace
 
 Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
@@ -439,6 +524,17 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
   if (modelCount == 0)
     return {};
   const int featureCount = static_cast<int>(landmarks[0].size());
+  BaseDomain closedDomain;
+  BaseDomainHoles domainHoles;
+  if (options.domain)
+  {
+    if (Status s = closeBaseDomain(*options.domain, closedDomain, domainHoles); !s.ok())
+      return Status::error("the base domain the climbs are judged over: " + s.message());
+    if (domainHoles.openVertexCount != featureCount)
+      return Status::error("the base domain the climbs are judged over has " +
+        std::to_string(domainHoles.openVertexCount) + " vertices but the models " + std::to_string(featureCount) +
+        " features");
+  }
   for (int m = 0; m < modelCount; ++m)
   {
     if (!surfaces[m])
@@ -524,11 +620,13 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
   };
   // Sources are the landmarks as given: a placed feature is no source.
   const std::vector<LandmarkList> given = landmarks;
+  // With climbs to judge, the last tenth of the progress is theirs.
+  const double placing = options.domain ? 0.9 : 1.0;
   for (std::size_t set = 0; set < missingSets.size(); ++set)
   {
     const std::vector<char>& dropped = missingSets[set];
-    const double done = static_cast<double>(set) / missingSets.size();
-    const double share = 1.0 / missingSets.size();
+    const double done = placing * set / missingSets.size();
+    const double share = placing / missingSets.size();
     if (Status s = placeOneSet(surfaces, given, onBoundary, dropped, setOf, static_cast<int>(set), source, options, out,
           [&](double fraction) { progress(done + share * fraction); });
         !s.ok())
@@ -539,6 +637,9 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
   });
   for (const PlacedLandmark& placed : out.placed)
     landmarks[placed.model][placed.feature] = placed.vertex;
+  if (options.domain)
+    judgeClimbs(surfaces, landmarks, closedDomain, domainHoles, options, out.placed,
+      [&](double fraction) { progress(placing + (1.0 - placing) * fraction); });
   progress(1.0);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return {};

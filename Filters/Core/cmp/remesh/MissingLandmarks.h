@@ -6,6 +6,7 @@
 ///        connectivity. Beyond the paper, whose future work lists missing
 ///        feature points.
 
+#include <cmp/basedomain/BaseDomain.h>
 #include <cmp/io/Landmarks.h>
 #include <cmp/map/Straighten.h>
 #include <cmp/mesh/Status.h>
@@ -78,6 +79,24 @@ struct MissingLandmarkOptions
   ///        (edge-path distance over the square root of its area); a climb
   ///        that would go farther keeps the vertex the maps gave.
   double tipReach = 0.2;
+  /// \brief The base domain the collection will then be mapped over (open
+  ///        for surfaces with boundaries), if known; null: none. With it, a
+  ///        feature that climbed to a tip keeps the tip only where its
+  ///        model's map over this L0 (traced, straightened, curves freed as
+  ///        `straighten` says) is no more distorted than with the feature at
+  ///        the vertex the maps gave (`GlobalMapReport::distortionAfter`);
+  ///        a model that cannot be mapped one way takes the other. Why: on a
+  ///        model without the protrusion (a protrusion cone, a tail the
+  ///        model lacks) the climb stops on a rump or a hip, and the map then
+  ///        pulls the whole model towards it and does not settle (Spot cut
+  ///        open round its back, `L0` from 381: 28 times its isometric
+  ///        energy and 2.18% of its diagonal from its remesh, against 1.6
+  ///        and 1.06% unclimbed); elsewhere the unclimbed vertex is the one
+  ///        that leaves the map unsettled (Spot closed, `L0` from 387).
+  ///        Costs two mappings of each model with a climbed feature, one
+  ///        more per further climbed feature (Documentation/filters/
+  ///        MissingLandmarkPlacer.md, "Measured"). Must outlive the call.
+  const BaseDomain* domain = nullptr;
   /// \brief How each model of the reduced collection is straightened and
   ///        mapped (the defaults: curves freed).
   StraightenOptions straighten;
@@ -108,6 +127,15 @@ struct PlacedLandmark
   ///        sources have the feature at (`MissingLandmarkOptions::climbToTips`),
   ///        over the square root of the model's area; 0 if it did not climb.
   double climbed = 0.0;
+  /// \brief With `MissingLandmarkOptions::domain`, for a feature that
+  ///        climbed: its model's map distortion over that L0 with the
+  ///        feature at the tip (`tipDistortion`) and at the vertex the maps
+  ///        gave (`mappedDistortion`); infinite where the model could not be
+  ///        mapped, 0 where it was not judged. `climbed` is 0 and `vertex`
+  ///        `mappedVertex` when the climb was undone.
+  double tipDistortion = 0.0;
+  double mappedDistortion = 0.0; ///< See `tipDistortion`.
+  bool climbUndone = false;      ///< Whether the climb was undone by the maps' distortion.
 };
 
 /// \brief What `placeMissingLandmarks()` did.
@@ -140,7 +168,8 @@ struct MissingLandmarkReport
 /// (`similarityWidth`), is projected onto m, and f goes to the nearest
 /// corner of that triangle that carries no other feature. A feature that
 /// the sources have at the tip of a protrusion then climbs to the tip near
-/// that vertex (`climbToTips`). Measured in
+/// that vertex (`climbToTips`), unless its model's map over `domain`, when
+/// given, is less distorted without the climb. Measured in
 /// Documentation/filters/MissingLandmarkPlacer.md.
 ///
 /// On success `landmarks` has every feature placed on every model that
@@ -159,7 +188,8 @@ struct MissingLandmarkReport
 /// Fails (Status), naming the problem, on options out of range (a level
 /// outside 1 to `kMaximumRemeshLevel`, negative relaxation rounds or
 /// similarity width, a tip radius or reach that is not positive, a negative
-/// tip tolerance), lists of different lengths or invalid
+/// tip tolerance, a `domain` that cannot be closed or whose vertices are not
+/// one per feature), lists of different lengths or invalid
 /// (`validateLandmarks()` with missing features allowed), a missing feature that lies on some model's boundary, a
 /// feature missing on every model, fewer than 4 features left, no model
 /// with every feature (or a `baseDomainModel` that misses some), a reduced
