@@ -419,9 +419,9 @@ def _place_missing_landmarks(args, models, mine, ranks, report, cones=None):
                 climb = entry.get("climbed_per_sqrt_area") or 0.0
                 if entry.get("climb_undone"):
                     tip = entry.get("tip_distortion")
-                    judged = ("; kept there, not climbed to the peak nearby: %s's map over L0 is less distorted "
-                              "so, %.3g against %s" % (model.name, entry["mapped_distortion"],
-                                                      "no map" if tip is None else "%.3g" % tip))
+                    judged = ("; kept there, not climbed to the peak nearby: %s's map over L0 settles only so, "
+                              "distortion %.3g against %s" % (model.name, entry["mapped_distortion"],
+                                                              "no map" if tip is None else "%.3g" % tip))
                 else:
                     judged = ""
                 print("  %s: feature %d placed at vertex %d (the models that have it agree within %.1f%% of "

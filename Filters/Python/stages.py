@@ -163,7 +163,7 @@ def place_missing_landmarks(models, base_domain_model, domain=None):
                 tip, at_mapped = judged[feature]
                 entry["tip_distortion"] = significant(tip) if numpy.isfinite(tip) else None
                 entry["mapped_distortion"] = significant(at_mapped) if numpy.isfinite(at_mapped) else None
-                entry["climb_undone"] = bool(at_mapped < tip)
+                entry["climb_undone"] = bool(climb_of[feature] == 0.0)
             entries.append(entry)
         entries.sort(key=lambda entry: entry["feature"])
         left = [f for f in model.missing if f not in {entry["feature"] for entry in entries}]

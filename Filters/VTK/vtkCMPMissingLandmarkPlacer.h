@@ -31,10 +31,10 @@
 /// has it; the geometric median of the carried points, projected onto the
 /// model, gives the nearest vertex that carries no other feature. With the
 /// optional second input, the base domain the collection will be mapped
-/// over (L0, with FeatureId), a feature that climbed to a tip keeps it only
-/// where its model's map over that L0 is no more distorted than without the
-/// climb (field arrays `PlacedFeatureTipDistortion` and
-/// `PlacedFeatureMappedDistortion`). Measured in
+/// over (L0, with FeatureId), a feature that climbed to a tip goes back to
+/// where the maps carried it if its model's map over that L0 does not settle
+/// with the climb (more than twice as distorted as without; field arrays
+/// `PlacedFeatureTipDistortion` and `PlacedFeatureMappedDistortion`). Measured in
 /// Documentation/filters/MissingLandmarkPlacer.md.
 ///
 /// Fails with `vtkErrorMacro` and an empty output when an input is not a

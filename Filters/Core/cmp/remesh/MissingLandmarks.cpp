@@ -433,8 +433,9 @@ double mapDistortion(const TriangleMesh& surface, const LandmarkList& list, cons
 /// `MissingLandmarkOptions::domain`: every placed feature that climbed is
 /// judged by its model's map over the L0 the collection will be mapped
 /// over, with the feature at the tip and at the vertex the maps gave (the
-/// model's other placed features where they are); the less distorted map
-/// wins, the tip on a tie or where neither can be judged.
+/// model's other placed features where they are); the climb is undone where
+/// its map is more than `unsettledRatio` times as distorted (infinite: it
+/// could not be made), and kept where neither can be judged.
 void judgeClimbs(const std::vector<const TriangleMesh*>& surfaces, std::vector<LandmarkList>& landmarks,
   const BaseDomain& domain, const BaseDomainHoles& holes, const MissingLandmarkOptions& options,
   std::vector<PlacedLandmark>& placed, const std::function<void(double)>& progress)
@@ -484,7 +485,7 @@ void judgeClimbs(const std::vector<const TriangleMesh*>& surfaces, std::vector<L
     p.tipDistortion = distortion[tipJob[i]];
     p.mappedDistortion = distortion[mappedJob[i]];
     // NaN (not judged) compares false: the tip stays.
-    if (p.mappedDistortion < p.tipDistortion)
+    if (options.unsettledRatio * p.mappedDistortion < p.tipDistortion)
     {
       p.climbUndone = true;
       p.climbed = 0.0;
@@ -521,6 +522,8 @@ Status placeMissingLandmarks(const std::vector<const TriangleMesh*>& surfaces, s
   if (!(options.tipRadius > 0.0) || !(options.tipReach > 0.0) || !std::isfinite(options.tipRadius) ||
     !std::isfinite(options.tipReach) || !(options.tipTolerance >= 0.0) || !std::isfinite(options.tipTolerance))
     return Status::error("the tip radius and reach must be positive, the tip tolerance 0 or positive");
+  if (!(options.unsettledRatio >= 1.0) || !std::isfinite(options.unsettledRatio))
+    return Status::error("the unsettled ratio must be at least 1");
   if (modelCount == 0)
     return {};
   const int featureCount = static_cast<int>(landmarks[0].size());

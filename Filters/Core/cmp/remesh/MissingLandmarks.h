@@ -80,23 +80,29 @@ struct MissingLandmarkOptions
   ///        that would go farther keeps the vertex the maps gave.
   double tipReach = 0.2;
   /// \brief The base domain the collection will then be mapped over (open
-  ///        for surfaces with boundaries), if known; null: none. With it, a
-  ///        feature that climbed to a tip keeps the tip only where its
-  ///        model's map over this L0 (traced, straightened, curves freed as
-  ///        `straighten` says) is no more distorted than with the feature at
-  ///        the vertex the maps gave (`GlobalMapReport::distortionAfter`);
-  ///        a model that cannot be mapped one way takes the other. Why: on a
-  ///        model without the protrusion (a protrusion cone, a tail the
-  ///        model lacks) the climb stops on a rump or a hip, and the map then
-  ///        pulls the whole model towards it and does not settle (Spot cut
-  ///        open round its back, `L0` from 381: 28 times its isometric
-  ///        energy and 2.18% of its diagonal from its remesh, against 1.6
-  ///        and 1.06% unclimbed); elsewhere the unclimbed vertex is the one
-  ///        that leaves the map unsettled (Spot closed, `L0` from 387).
-  ///        Costs two mappings of each model with a climbed feature, one
-  ///        more per further climbed feature (Documentation/filters/
-  ///        MissingLandmarkPlacer.md, "Measured"). Must outlive the call.
+  ///        for surfaces with boundaries), if known; null: none. With it,
+  ///        each model with a feature that climbed to a tip is traced,
+  ///        straightened and mapped over this L0 (curves freed as
+  ///        `straighten` says) with the feature at the tip and at the vertex
+  ///        the maps gave, and the climb is undone where its map is more
+  ///        than `unsettledRatio` times as distorted
+  ///        (`GlobalMapReport::distortionAfter`) or cannot be made. Why: on
+  ///        a model without the protrusion (a protrusion cone, a tail the
+  ///        model lacks) the climb stops on a rump or a hip, and the map can
+  ///        then not settle (Spot cut open round its back, `L0` from 381: 28
+  ///        times its isometric energy and 2.18% of its diagonal from its
+  ///        remesh, against 1.64 and 1.05% unclimbed). Costs two mappings
+  ///        of each model with a climbed feature, one more per further
+  ///        climbed feature (Documentation/filters/MissingLandmarkPlacer.md,
+  ///        "Measured"). Must outlive the call.
   const BaseDomain* domain = nullptr;
+  /// \brief How many times as distorted the map with a climb must be, over
+  ///        `domain`, for the climb to be undone: a map that did not settle.
+  ///        Measured: climbed and unclimbed maps that both settle differ by
+  ///        at most 3% (a hoof's climb, right by 3 to 4% of the square root
+  ///        of the area, was a 0.1% tie); those that did not settle were 17
+  ///        to 69,000 times as distorted as the other.
+  double unsettledRatio = 2.0;
   /// \brief How each model of the reduced collection is straightened and
   ///        mapped (the defaults: curves freed).
   StraightenOptions straighten;
@@ -132,7 +138,7 @@ struct PlacedLandmark
   ///        feature at the tip (`tipDistortion`) and at the vertex the maps
   ///        gave (`mappedDistortion`); infinite where the model could not be
   ///        mapped, 0 where it was not judged. `climbed` is 0 and `vertex`
-  ///        `mappedVertex` when the climb was undone.
+  ///        `mappedVertex` when the climb was undone (`climbUndone`).
   double tipDistortion = 0.0;
   double mappedDistortion = 0.0; ///< See `tipDistortion`.
   bool climbUndone = false;      ///< Whether the climb was undone by the maps' distortion.
@@ -169,7 +175,7 @@ struct MissingLandmarkReport
 /// corner of that triangle that carries no other feature. A feature that
 /// the sources have at the tip of a protrusion then climbs to the tip near
 /// that vertex (`climbToTips`), unless its model's map over `domain`, when
-/// given, is less distorted without the climb. Measured in
+/// given, does not settle with the climb and does without. Measured in
 /// Documentation/filters/MissingLandmarkPlacer.md.
 ///
 /// On success `landmarks` has every feature placed on every model that
@@ -188,8 +194,8 @@ struct MissingLandmarkReport
 /// Fails (Status), naming the problem, on options out of range (a level
 /// outside 1 to `kMaximumRemeshLevel`, negative relaxation rounds or
 /// similarity width, a tip radius or reach that is not positive, a negative
-/// tip tolerance, a `domain` that cannot be closed or whose vertices are not
-/// one per feature), lists of different lengths or invalid
+/// tip tolerance, an unsettled ratio below 1, a `domain` that cannot be
+/// closed or whose vertices are not one per feature), lists of different lengths or invalid
 /// (`validateLandmarks()` with missing features allowed), a missing feature that lies on some model's boundary, a
 /// feature missing on every model, fewer than 4 features left, no model
 /// with every feature (or a `baseDomainModel` that misses some), a reduced
