@@ -82,14 +82,8 @@ int vtkCMPMissingLandmarkPlacer::RequestData(
   if (vtkPolyData* domainInput = vtkPolyData::GetData(inputVector[1]))
   {
     // Open or closed: the core closes it as the other stages do.
-    cmp::BaseDomain closed;
-    cmp::BaseDomainHoles holes;
-    if (cmp::Status s = cmp::bridge::toClosedBaseDomain(domainInput, closed, holes); !s.ok())
+    if (cmp::Status s = cmp::bridge::toCheckedBaseDomain(domainInput, domain); !s.ok())
       return fail("the base domain: " + s.message());
-    domain = closed;
-    domain.mesh.points.resize(holes.openVertexCount);
-    domain.featureIds.resize(holes.openVertexCount);
-    domain.mesh.triangles.resize(holes.openTriangleCount);
     options.domain = &domain;
   }
   cmp::MissingLandmarkReport report;

@@ -164,6 +164,18 @@ Status toClosedBaseDomain(vtkPolyData* input, BaseDomain& domain, BaseDomainHole
   return closeBaseDomain(open, domain, holes);
 }
 
+Status toCheckedBaseDomain(vtkPolyData* input, BaseDomain& domain)
+{
+  BaseDomainHoles holes;
+  if (Status s = toClosedBaseDomain(input, domain, holes); !s.ok())
+    return s;
+  // The closed L0 starts with the open one's vertices and triangles.
+  domain.mesh.points.resize(holes.openVertexCount);
+  domain.featureIds.resize(holes.openVertexCount);
+  domain.mesh.triangles.resize(holes.openTriangleCount);
+  return {};
+}
+
 Status toClosedSurface(TriangleMesh checked, const LandmarkList& landmarks, const BaseDomainHoles& holes,
   ClosedSurface& out, const SurfaceCheckOptions& capped)
 {

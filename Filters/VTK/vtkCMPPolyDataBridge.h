@@ -68,6 +68,11 @@ Status toBaseDomain(vtkPolyData* input, BaseDomain& domain, int landmarkCount = 
 ///        many vertices.
 Status toClosedBaseDomain(vtkPolyData* input, BaseDomain& domain, BaseDomainHoles& holes, int landmarkCount = -1);
 
+/// \brief Reads a given base domain polydata, closed or with boundary loops,
+///        checked as `toClosedBaseDomain()` checks it, and keeps it as given
+///        (its holes open), for the core stages that close it themselves.
+Status toCheckedBaseDomain(vtkPolyData* input, BaseDomain& domain);
+
 /// \brief A surface as the stages read it: `open` as given (closed or with
 ///        boundary loops), `closed` with its holes capped against L0's
 ///        (`closeSurface()`) and checked (`checkSurface()`), its landmarks

@@ -81,15 +81,10 @@ int vtkCMPProtrusionCones::RequestData(
   if (vtkPolyData* givenInput = vtkPolyData::GetData(inputVector[1]))
   {
     // An open L0 (surfaces with boundaries) is checked closed; the cones
-    // split triangles of the open one, which the closed one starts with.
-    cmp::BaseDomain closedGiven, given;
-    cmp::BaseDomainHoles holes;
-    if (cmp::Status s = cmp::bridge::toClosedBaseDomain(givenInput, closedGiven, holes); !s.ok())
+    // split triangles of the open one.
+    cmp::BaseDomain given;
+    if (cmp::Status s = cmp::bridge::toCheckedBaseDomain(givenInput, given); !s.ok())
       return fail("the base domain: " + s.message());
-    given = closedGiven;
-    given.mesh.points.resize(holes.openVertexCount);
-    given.featureIds.resize(holes.openVertexCount);
-    given.mesh.triangles.resize(holes.openTriangleCount);
     if (cmp::Status s = cmp::addProtrusionCones(surfaces, landmarks, given, domain, options, &report); !s.ok())
       return fail(s.message());
   }

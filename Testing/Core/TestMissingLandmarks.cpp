@@ -30,18 +30,31 @@ void expectError(const Status& status, const std::string& fragment)
 // them to the tip near there (`climbToTips`), which must bring them closer;
 // the others (3, on the head; 13, at the rump; 17, by a front leg) stay
 // where the maps carry them.
-TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
+/// Five SHREC'07 models with their landmarks, as the placer takes them.
+struct RealCollection
 {
   std::vector<test::LandmarkedModel> models;
-  for (const char* name : { "381", "383", "384", "388", "391" })
-    models.push_back(test::landmarkedRealModel(name));
   std::vector<const TriangleMesh*> surfaces;
   std::vector<LandmarkList> landmarks;
-  for (const test::LandmarkedModel& model : models)
+
+  RealCollection()
   {
-    surfaces.push_back(&model.data.mesh);
-    landmarks.push_back(model.landmarks);
+    for (const char* name : { "381", "383", "384", "388", "391" })
+      models.push_back(test::landmarkedRealModel(name));
+    for (const test::LandmarkedModel& model : models)
+    {
+      surfaces.push_back(&model.data.mesh);
+      landmarks.push_back(model.landmarks);
+    }
   }
+};
+
+TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
+{
+  RealCollection collection;
+  const std::vector<test::LandmarkedModel>& models = collection.models;
+  const std::vector<const TriangleMesh*>& surfaces = collection.surfaces;
+  std::vector<LandmarkList>& landmarks = collection.landmarks;
   // By model, then feature, as the report lists them.
   const std::vector<std::pair<int, int>> taken = { { 1, 3 }, { 1, 9 }, { 1, 17 }, { 3, 5 }, { 3, 11 }, { 3, 13 } };
   const std::vector<int> tips = { 5, 9, 11 };
@@ -101,16 +114,10 @@ TEST(MissingLandmarks, PlacesLandmarksTakenAwayFromRealModels)
 // hooves above climb; here each is mapped both ways, and both maps settle.
 TEST(MissingLandmarks, AClimbIsUndoneOnlyWhereTheModelsMapOverL0DoesNotSettleWithIt)
 {
-  std::vector<test::LandmarkedModel> models;
-  for (const char* name : { "381", "383", "384", "388", "391" })
-    models.push_back(test::landmarkedRealModel(name));
-  std::vector<const TriangleMesh*> surfaces;
-  std::vector<LandmarkList> landmarks;
-  for (const test::LandmarkedModel& model : models)
-  {
-    surfaces.push_back(&model.data.mesh);
-    landmarks.push_back(model.landmarks);
-  }
+  RealCollection collection;
+  const std::vector<test::LandmarkedModel>& models = collection.models;
+  const std::vector<const TriangleMesh*>& surfaces = collection.surfaces;
+  std::vector<LandmarkList>& landmarks = collection.landmarks;
   const std::vector<std::pair<int, int>> taken = { { 1, 9 }, { 1, 17 }, { 3, 5 }, { 3, 11 } };
   const std::vector<int> tips = { 5, 9, 11 };
   for (auto [m, f] : taken)

@@ -99,9 +99,10 @@ struct MissingLandmarkOptions
   /// \brief How many times as distorted the map with a climb must be, over
   ///        `domain`, for the climb to be undone: a map that did not settle.
   ///        Measured: climbed and unclimbed maps that both settle differ by
-  ///        at most 3% (a hoof's climb, right by 3 to 4% of the square root
-  ///        of the area, was a 0.1% tie); those that did not settle were 17
-  ///        to 69,000 times as distorted as the other.
+  ///        at most 2.6% (a hoof's climb, right by 3% of the square root of
+  ///        the area, was a 0.1% tie); of the two that did not settle, one
+  ///        was 17 times as distorted as the other, the other could not be
+  ///        made.
   double unsettledRatio = 2.0;
   /// \brief How each model of the reduced collection is straightened and
   ///        mapped (the defaults: curves freed).
